@@ -1,0 +1,118 @@
+#pragma once
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <tissue_contact/elasticity/discretization.h>
+#include <tissue_contact/materials/material.h>
+
+#include <array>
+#include <map>
+
+namespace TissueContact
+{
+  namespace Elasticity
+  {
+    /**
+     * What the volume of one body (a material id) contributes: its material
+     * (or none for a rigid body, whose cells are skipped because all its
+     * DoFs are prescribed) and its reference density @f$\rho_0@f$.
+     */
+    struct BodyData
+    {
+      const Materials::Material *material = nullptr;
+      double                     density  = 0.;
+    };
+
+    /** Dead external loads at load factor 1: body force per unit mass and
+     * reference tractions @f$t_0@f$ per boundary id. */
+    struct DeadLoads
+    {
+      Tensor<1, 3>                                 gravity;
+      std::map<types::boundary_id, Tensor<1, 3>> tractions;
+    };
+
+    /** Cell averages of derived fields, for output. */
+    struct CellQuantities
+    {
+      Vector<double>                J, strain_energy_density, von_mises;
+      std::array<Vector<double>, 6> cauchy_stress; // xx yy zz yz xz xy
+    };
+
+    /**
+     * The volume weak form of finite-strain elasticity
+     * (doc/theory/02-weak-form-and-linearization.md):
+     * @f[ R_{ai}(u,\lambda) = \int_{\Omega_0} P_{iJ}(F)\,
+     *       \partial_J N_a \,dV - \lambda f^{\rm ext}_{ai}, \qquad
+     *   f^{\rm ext}_{ai} = \int_{\Omega_0}\rho_0 g_i N_a\,dV
+     *       + \int_{\Gamma_t} t_{0,i} N_a\,dA, @f]
+     * its exact tangent
+     * @f$K_{ai,bk} = \int \partial_J N_a\,\mathcal{A}_{iJkL}\,
+     *    \partial_L N_b\,dV@f$ (@f$=K_c + K_\sigma@f$), and the total
+     * potential energy
+     * @f$\Pi(u,\lambda) = \int\Psi(F)\,dV - \lambda f^{\rm ext}\cdot u@f$,
+     * whose gradient the residual is. Assembly runs on all cores with
+     * WorkStream. Vectors and matrices are assembled without constraints;
+     * the solver imposes prescribed values.
+     */
+    class ElasticAssembler
+    {
+    public:
+      ElasticAssembler(const Discretization &                      disc,
+                       const std::map<types::material_id, BodyData> &bodies,
+                       const DeadLoads &                            loads);
+
+      /**
+       * Compute @p R and, when @p K is not null, the tangent at the
+       * displacement @p u and load factor @p load_factor. @p K must use
+       * the discretization's sparsity pattern. Returns false, leaving R and
+       * K unspecified, if @f$\det F \le 0@f$ at a quadrature point of any
+       * deformable cell (an inverted element).
+       */
+      bool
+      assemble(const Vector<double> &u,
+               const double          load_factor,
+               Vector<double> &      R,
+               SparseMatrix<double> *K) const;
+
+      /** @f$\Pi(u,\lambda)@f$, or +infinity if an element is inverted. */
+      double
+      energy(const Vector<double> &u, const double load_factor) const;
+
+      /** The external force vector at load factor 1. */
+      const Vector<double> &
+      external_force() const
+      {
+        return f_ext;
+      }
+
+      /** Smallest @f$\det F@f$ over quadrature points of deformable cells. */
+      double
+      min_jacobian(const Vector<double> &u) const;
+
+      /**
+       * The quasi-viscosity diagonal of dissertation eq. (4.48)-(4.51):
+       * @f$D_{ai} = \eta\sum_{e\ni a} \mu_e h_e / n_e@f$ with the element
+       * size @f$h_e = |\Omega_e|^{1/3}@f$, its small-strain shear modulus
+       * @f$\mu_e@f$ and @f$n_e@f$ nodes per element, so that @f$\eta@f$ is
+       * a dimensionless fraction of the stiffness diagonal.
+       */
+      Vector<double>
+      quasi_viscosity_diagonal(const double eta) const;
+
+      /** Per-cell averages of @f$J@f$, Cauchy stress
+       * @f$\sigma = J^{-1} P F^T@f$, von Mises stress and @f$\Psi@f$. */
+      CellQuantities
+      cell_quantities(const Vector<double> &u) const;
+
+    private:
+      const Discretization &                       disc;
+      const std::map<types::material_id, BodyData> bodies;
+      Vector<double>                               f_ext;
+
+      const BodyData *
+      body(const types::material_id id) const;
+    };
+  } // namespace Elasticity
+} // namespace TissueContact

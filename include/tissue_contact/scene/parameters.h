@@ -1,0 +1,145 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <tissue_contact/scene/prescribed_motion.h>
+#include <tissue_contact/solvers/newton_solver.h>
+
+#include <string>
+#include <vector>
+
+namespace TissueContact
+{
+  namespace Scene
+  {
+    using namespace dealii;
+
+    /** prm subsection "Mesh": a gmsh file or a generated box. */
+    struct MeshParameters
+    {
+      std::string               source = "box";
+      std::string               file;
+      Point<3>                  lower, upper{1., 1., 1.};
+      std::vector<unsigned int> subdivisions{1, 1, 1};
+      double                    distortion = 0.;
+      double                    scale      = 1.;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm, const std::string &prm_directory);
+    };
+
+    /** prm subsection "Bodies/Body N": one body (a material id) and its
+     * material, density, optional fibers, or its rigid motion. */
+    struct BodyParameters
+    {
+      std::string        name  = "body";
+      types::material_id id    = 0;
+      std::string        model = "neo-Hookean";
+      double             density = 1.;
+      double             mu = 1., lambda = 1.;
+      double             C1 = 1., C2 = 0., a = 1.;
+      double             alpha = 1., beta = 1.;
+      bool               fiber         = false;
+      double             fiber_alpha   = 0., fiber_beta = 1.;
+      std::string        fiber_direction = "1; 0; 0";
+      PrescribedMotion   rigid_motion;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    /** prm subsection "Boundary conditions/Dirichlet N": a prescribed
+     * displacement (clamp, translation, rigid rotation) of chosen
+     * components on one boundary id. */
+    struct DirichletParameters
+    {
+      types::boundary_id boundary_id = 0;
+      std::string        components  = "xyz";
+      PrescribedMotion   motion;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    /** prm subsection "Boundary conditions/Traction N": a dead reference
+     * traction on one boundary id. */
+    struct TractionParameters
+    {
+      types::boundary_id boundary_id = 0;
+      Tensor<1, 3>       traction;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    /** prm subsection "Output". */
+    struct OutputParameters
+    {
+      std::string directory = "output";
+      std::string base_name = "solution";
+      bool        write_vtu = true;
+      bool        print_timing = true;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm, const std::string &prm_directory);
+    };
+
+    /**
+     * All parameters of a scene. The numbers of bodies, Dirichlet conditions
+     * and tractions are read first; then every subsection is declared and
+     * the file is parsed strictly: an unknown or malformed entry stops with
+     * an error naming it and its line.
+     */
+    struct SceneParameters
+    {
+      MeshParameters                   mesh;
+      unsigned int                     degree = 1;
+      std::vector<BodyParameters>      bodies;
+      std::vector<DirichletParameters> dirichlet;
+      std::vector<TractionParameters>  tractions;
+      Tensor<1, 3>                     gravity;
+      Solvers::IncrementalNewtonSolver::Parameters solver;
+      OutputParameters                 output;
+
+      /** Declare everything, with the given numbers of subsections. */
+      static void
+      declare(ParameterHandler &prm,
+              const unsigned int n_bodies    = 1,
+              const unsigned int n_dirichlet = 1,
+              const unsigned int n_tractions = 1);
+
+      /** Read a prm file. Relative paths in it are taken relative to the
+       * file's folder. */
+      static SceneParameters
+      from_file(const std::string &filename);
+
+      /** Read prm text (relative paths: the current folder). */
+      static SceneParameters
+      from_string(const std::string &text);
+
+    private:
+      static SceneParameters
+      parse_text(const std::string &text,
+                 const std::string &name,
+                 const std::string &directory);
+      void
+      parse(ParameterHandler &prm, const std::string &prm_directory);
+    };
+
+    /** Parse "a, b, c" into a tensor; throws naming @p entry otherwise. */
+    Tensor<1, 3>
+    parse_vector(const std::string &text, const std::string &entry);
+  } // namespace Scene
+} // namespace TissueContact

@@ -1,0 +1,93 @@
+#pragma once
+
+#include <deal.II/base/timer.h>
+
+#include <tissue_contact/elasticity/discretization.h>
+#include <tissue_contact/elasticity/elastic_assembler.h>
+#include <tissue_contact/scene/scene.h>
+#include <tissue_contact/solvers/newton_solver.h>
+
+#include <ostream>
+
+namespace TissueContact
+{
+  using namespace dealii;
+
+  /**
+   * A static analysis of a scene, the program's main job: builds the mesh,
+   * the finite element space and the assembler from the parameters, drives
+   * the incremental Newton solver from load factor 0 to 1, and writes the
+   * VTU/PVD series and the convergence log. It is the NonlinearProblem the
+   * solver sees: residual and tangent of the elastic bodies, the prescribed
+   * displacements of boundaries and rigid bodies at each load factor.
+   */
+  class StaticSimulation : public Solvers::NonlinearProblem
+  {
+  public:
+    StaticSimulation(const Scene::SceneParameters &parameters,
+                     std::ostream &                out);
+
+    /** Solve and write output. Throws (after keeping every result already
+     * written) if the solve fails. */
+    Solvers::SolveStatistics
+    run();
+
+    /** Solve without writing any file (for tests). */
+    Solvers::SolveStatistics
+    solve_quietly();
+
+    const Vector<double> &
+    solution() const
+    {
+      return u;
+    }
+    const Elasticity::Discretization &
+    discretization() const
+    {
+      return disc;
+    }
+    const Elasticity::ElasticAssembler &
+    elastic_assembler() const
+    {
+      return assembler;
+    }
+    const Scene::Scene &
+    get_scene() const
+    {
+      return scene;
+    }
+
+    // NonlinearProblem
+    types::global_dof_index
+    n_dofs() const override
+    {
+      return disc.n_dofs();
+    }
+    const SparsityPattern &
+    sparsity_pattern() const override
+    {
+      return disc.sparsity_pattern;
+    }
+    bool
+    assemble(const Vector<double> &u,
+             const double          load_factor,
+             Vector<double> &      R,
+             SparseMatrix<double> *K) override;
+    std::map<types::global_dof_index, double>
+    prescribed_values(const double load_factor) const override;
+    double
+    external_force_norm(const double load_factor) const override;
+    Vector<double>
+    quasi_viscosity_diagonal(const double eta) const override;
+    std::vector<std::vector<bool>>
+    constant_modes() const override;
+
+  private:
+    Scene::Scene                       scene;
+    Elasticity::Discretization         disc;
+    Elasticity::ElasticAssembler       assembler;
+    std::vector<Scene::PrescribedDof>  prescribed;
+    Vector<double>                     u;
+    std::ostream &                     out;
+  };
+} // namespace TissueContact

@@ -1,0 +1,127 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <tissue_contact/solvers/linear_solver.h>
+#include <tissue_contact/solvers/nonlinear_problem.h>
+
+#include <functional>
+#include <string>
+
+namespace TissueContact
+{
+  namespace Solvers
+  {
+    /** One Newton iteration, as shown on screen and in the CSV log. */
+    struct IterationInfo
+    {
+      unsigned int increment         = 0;
+      double       load_factor       = 0.;
+      unsigned int iteration         = 0;
+      double       residual_norm     = 0.; // |R| on the free DoFs
+      double       update_norm       = 0.; // |s du|
+      double       step_length       = 1.; // line-search factor s
+      unsigned int linear_iterations = 0;
+    };
+
+    /** Summary of a whole solve. */
+    struct SolveStatistics
+    {
+      unsigned int increments        = 0;
+      unsigned int cutbacks          = 0;
+      unsigned int newton_iterations = 0;
+      unsigned int linear_iterations = 0;
+    };
+
+    /**
+     * The static solver of dissertation sec. 4.7 (doc/theory/04-solver.md):
+     * - LOOP 1, adaptive incremental loading of the load factor
+     *   @f$\lambda: 0\to 1@f$ with a two-point predictor
+     *   @f$u^{pred} = u_n + \frac{\lambda_{n+1}-\lambda_n}
+     *   {\lambda_n-\lambda_{n-1}}(u_n - u_{n-1})@f$; a failed increment is
+     *   halved and retried, an easy one lets the next grow;
+     * - LOOP 2, Newton: @f$(K + D/\Delta t)\,\delta u = -R@f$ with the
+     *   prescribed DoFs set to their remaining gap, optional quasi-viscosity
+     *   @f$D@f$;
+     * - LOOP 3, line search: @f$s = 1, \frac12, \frac14, \dots@f$ until no
+     *   element is inverted and @f$|R|@f$ decreased.
+     * Convergence: the prescribed values are reached and
+     * @f$|R_{free}| \le \max(\epsilon_{abs}, \epsilon_{rel} f_{scale})@f$,
+     * @f$f_{scale} = \max(|\lambda f^{ext}|, |R_{prescribed}|)@f$ (applied
+     * loads or reactions).
+     */
+    class IncrementalNewtonSolver
+    {
+    public:
+      /** Entries of the prm subsections "Load stepping" and "Newton". */
+      struct Parameters
+      {
+        double       initial_increment  = 0.25;
+        double       minimum_increment  = 1e-3;
+        double       maximum_increment  = 1.;
+        double       growth_factor      = 1.5;
+        unsigned int easy_iterations    = 5;
+        bool         two_point_predictor = true;
+
+        unsigned int max_iterations       = 25;
+        double       residual_tolerance   = 1e-8;
+        double       absolute_tolerance   = 1e-12;
+        unsigned int max_halvings         = 12;
+        bool         quasi_viscosity      = false;
+        double       viscosity_factor     = 0.1;
+        double       viscosity_time_step  = 1.;
+
+        LinearSolver::Parameters linear_solver;
+
+        static void
+        declare(ParameterHandler &prm);
+        void
+        parse(ParameterHandler &prm);
+      };
+
+      explicit IncrementalNewtonSolver(const Parameters &parameters);
+
+      /** Called after every Newton iteration. */
+      std::function<void(const IterationInfo &)> on_iteration;
+      /** Called after every converged increment with its load factor. */
+      std::function<void(unsigned int increment,
+                         double       load_factor,
+                         const Vector<double> &u)>
+        on_increment;
+      /** Called when an increment fails and is cut back. */
+      std::function<void(double load_factor, const std::string &reason)>
+        on_cutback;
+
+      /**
+       * Drive @p problem from @p u (the state at load factor 0) to load
+       * factor 1. Throws an ExcMessage naming the load factor and the reason
+       * if the increment falls below the minimum. @p timer, if given, gets
+       * the sections "assembly" and "linear solve".
+       */
+      SolveStatistics
+      solve(NonlinearProblem &problem,
+            Vector<double> &  u,
+            TimerOutput *     timer = nullptr);
+
+      /**
+       * One Newton solve (LOOPs 2 and 3) at a fixed load factor starting
+       * from @p u. Returns an empty string on success, else why it failed
+       * (u is then unspecified).
+       */
+      std::string
+      newton(NonlinearProblem &problem,
+             Vector<double> &  u,
+             const double      load_factor,
+             const unsigned int increment,
+             SolveStatistics & statistics,
+             TimerOutput *     timer = nullptr);
+
+      const Parameters parameters;
+
+    private:
+      SparseMatrix<double> K;
+      Vector<double>       viscosity;
+    };
+  } // namespace Solvers
+} // namespace TissueContact

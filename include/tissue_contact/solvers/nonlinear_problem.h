@@ -1,0 +1,66 @@
+#pragma once
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <map>
+
+namespace TissueContact
+{
+  namespace Solvers
+  {
+    using namespace dealii;
+
+    /**
+     * What the incremental Newton solver needs from a discrete problem
+     * @f$R(u,\lambda) = 0@f$ with prescribed values on some DoFs:
+     * residual and tangent, an admissibility check (no inverted element),
+     * the prescribed values at a load factor, and the quasi-viscosity
+     * diagonal. The solver knows nothing else about the physics.
+     */
+    class NonlinearProblem
+    {
+    public:
+      virtual ~NonlinearProblem() = default;
+
+      /** Number of unknowns. */
+      virtual types::global_dof_index
+      n_dofs() const = 0;
+
+      /** Sparsity pattern of the tangent. */
+      virtual const SparsityPattern &
+      sparsity_pattern() const = 0;
+
+      /** @f$R(u,\lambda)@f$ (all DoFs, prescribed ones included) and the
+       * tangent when @p K is not null. Returns false if @p u is not
+       * admissible (an inverted element); R and K are then unspecified. */
+      virtual bool
+      assemble(const Vector<double> &u,
+               const double          load_factor,
+               Vector<double> &      R,
+               SparseMatrix<double> *K) = 0;
+
+      /** The prescribed DoFs and their values at @p load_factor. */
+      virtual std::map<types::global_dof_index, double>
+      prescribed_values(const double load_factor) const = 0;
+
+      /** Norm of the applied external forces at @p load_factor: with the
+       * reactions, the force scale of the convergence test. */
+      virtual double
+      external_force_norm(const double load_factor) const = 0;
+
+      /** Diagonal @f$D@f$ of the quasi-viscosity (dissertation 4.7.3)
+       * for the dimensionless factor @p eta. */
+      virtual Vector<double>
+      quasi_viscosity_diagonal(const double eta) const = 0;
+
+      /** Per component, the DoFs of that component (AMG near-null space). */
+      virtual std::vector<std::vector<bool>>
+      constant_modes() const
+      {
+        return {};
+      }
+    };
+  } // namespace Solvers
+} // namespace TissueContact

@@ -1,0 +1,501 @@
+#include <deal.II/base/utilities.h>
+
+#include <tissue_contact/scene/parameters.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace TissueContact
+{
+  namespace Scene
+  {
+    namespace
+    {
+      const std::string vector_pattern_doc = " (three numbers: x, y, z)";
+
+      std::string
+      resolve(const std::string &path, const std::string &directory)
+      {
+        if (path.empty() || path[0] == '/' || directory.empty())
+          return path;
+        return directory + "/" + path;
+      }
+
+      void
+      declare_motion(ParameterHandler &prm, const std::string &what)
+      {
+        prm.declare_entry("Translation",
+                          "0, 0, 0",
+                          Patterns::List(Patterns::Double(), 3, 3),
+                          "Translation d of the " + what +
+                            " at load factor 1" + vector_pattern_doc);
+        prm.declare_entry("Rotation axis",
+                          "0, 0, 1",
+                          Patterns::List(Patterns::Double(), 3, 3),
+                          "Axis a of the rotation" + vector_pattern_doc);
+        prm.declare_entry("Rotation center",
+                          "0, 0, 0",
+                          Patterns::List(Patterns::Double(), 3, 3),
+                          "A point c on the rotation axis" +
+                            vector_pattern_doc);
+        prm.declare_entry("Rotation angle",
+                          "0",
+                          Patterns::Double(),
+                          "Rotation angle theta in degrees at load factor 1; "
+                          "u = R(lambda theta)(X - c) + c - X + lambda d.");
+      }
+
+      PrescribedMotion
+      parse_motion(ParameterHandler &prm)
+      {
+        PrescribedMotion m;
+        m.translation = parse_vector(prm.get("Translation"), "Translation");
+        m.axis        = parse_vector(prm.get("Rotation axis"), "Rotation axis");
+        m.center =
+          Point<3>(parse_vector(prm.get("Rotation center"), "Rotation center"));
+        m.angle = prm.get_double("Rotation angle") * M_PI / 180.;
+        AssertThrow(m.angle == 0. || m.axis.norm() > 0.,
+                    ExcMessage("Rotation axis must not be zero"));
+        return m;
+      }
+
+      struct Counts
+      {
+        unsigned int bodies = 1, dirichlet = 1, tractions = 0;
+      };
+
+      void
+      declare_counts(ParameterHandler &prm)
+      {
+        prm.enter_subsection("Bodies");
+        prm.declare_entry("Number of bodies",
+                          "1",
+                          Patterns::Integer(1, 64),
+                          "How many subsections 'Body 0', 'Body 1', ... "
+                          "follow, one per material id of the mesh.");
+        prm.leave_subsection();
+        prm.enter_subsection("Boundary conditions");
+        prm.declare_entry("Number of Dirichlet conditions",
+                          "1",
+                          Patterns::Integer(0, 64),
+                          "How many subsections 'Dirichlet 0', ... follow.");
+        prm.declare_entry("Number of tractions",
+                          "0",
+                          Patterns::Integer(0, 64),
+                          "How many subsections 'Traction 0', ... follow.");
+        prm.leave_subsection();
+      }
+
+      Counts
+      read_counts(const std::string &text, const std::string &name)
+      {
+        ParameterHandler prm;
+        declare_counts(prm);
+        std::istringstream in(text);
+        prm.parse_input(in, name, "", /*skip_undefined=*/true);
+        Counts c;
+        prm.enter_subsection("Bodies");
+        c.bodies = prm.get_integer("Number of bodies");
+        prm.leave_subsection();
+        prm.enter_subsection("Boundary conditions");
+        c.dirichlet = prm.get_integer("Number of Dirichlet conditions");
+        c.tractions = prm.get_integer("Number of tractions");
+        prm.leave_subsection();
+        return c;
+      }
+    } // namespace
+
+
+    Tensor<1, 3>
+    parse_vector(const std::string &text, const std::string &entry)
+    {
+      const auto parts = Utilities::split_string_list(text, ',');
+      AssertThrow(parts.size() == 3,
+                  ExcMessage("entry '" + entry +
+                             "' must be three numbers x, y, z, not '" + text +
+                             "'"));
+      Tensor<1, 3> v;
+      for (unsigned int d = 0; d < 3; ++d)
+        v[d] = Utilities::string_to_double(parts[d]);
+      return v;
+    }
+
+
+    void
+    MeshParameters::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mesh");
+      prm.declare_entry("Source",
+                        "box",
+                        Patterns::Selection("box|file"),
+                        "box: a generated box of tetrahedra (material id 0, "
+                        "boundary ids 0..5 on the faces x-, x+, y-, y+, z-, "
+                        "z+); file: a gmsh .msh file (format 2.2 or 4) whose "
+                        "physical volumes are material ids and physical "
+                        "surfaces boundary ids.");
+      prm.declare_entry("File",
+                        "",
+                        Patterns::Anything(),
+                        "The gmsh mesh file (Source = file); relative to the "
+                        "folder of this parameter file.");
+      prm.declare_entry("Box lower corner",
+                        "0, 0, 0",
+                        Patterns::List(Patterns::Double(), 3, 3),
+                        "Lower corner of the box" + vector_pattern_doc);
+      prm.declare_entry("Box upper corner",
+                        "1, 1, 1",
+                        Patterns::List(Patterns::Double(), 3, 3),
+                        "Upper corner of the box" + vector_pattern_doc);
+      prm.declare_entry("Box subdivisions",
+                        "1, 1, 1",
+                        Patterns::List(Patterns::Integer(1), 3, 3),
+                        "Hexahedral cells per direction; each is split into "
+                        "tetrahedra.");
+      prm.declare_entry("Distortion",
+                        "0",
+                        Patterns::Double(0., 0.4),
+                        "Move interior vertices randomly by this fraction of "
+                        "the local edge length (an unstructured mesh for "
+                        "tests).");
+      prm.declare_entry("Scale",
+                        "1",
+                        Patterns::Double(0.),
+                        "Multiply all mesh coordinates by this factor (e.g. "
+                        "0.001 for a mesh in mm and SI units).");
+      prm.leave_subsection();
+    }
+
+
+    void
+    MeshParameters::parse(ParameterHandler &prm, const std::string &dir)
+    {
+      prm.enter_subsection("Mesh");
+      source = prm.get("Source");
+      file   = prm.get("File");
+      if (source == "file")
+        {
+          AssertThrow(!file.empty(),
+                      ExcMessage("Mesh: Source = file needs a File"));
+          file = resolve(file, dir);
+        }
+      lower        = Point<3>(parse_vector(prm.get("Box lower corner"),
+                                    "Box lower corner"));
+      upper        = Point<3>(parse_vector(prm.get("Box upper corner"),
+                                    "Box upper corner"));
+      const auto s = Utilities::string_to_int(
+        Utilities::split_string_list(prm.get("Box subdivisions"), ','));
+      subdivisions.assign(s.begin(), s.end());
+      distortion = prm.get_double("Distortion");
+      scale      = prm.get_double("Scale");
+      AssertThrow(scale > 0., ExcMessage("Mesh: Scale must be positive"));
+      for (unsigned int d = 0; d < 3; ++d)
+        AssertThrow(upper[d] > lower[d],
+                    ExcMessage("Mesh: Box upper corner must exceed Box lower "
+                               "corner in every coordinate"));
+      prm.leave_subsection();
+    }
+
+
+    void
+    BodyParameters::declare(ParameterHandler &prm)
+    {
+      prm.declare_entry("Name", "body", Patterns::Anything(), "A label.");
+      prm.declare_entry("Material id",
+                        "0",
+                        Patterns::Integer(0, 255),
+                        "The material id (gmsh physical volume tag) of the "
+                        "cells of this body.");
+      prm.declare_entry(
+        "Model",
+        "neo-Hookean",
+        Patterns::Selection("neo-Hookean|Mooney-Rivlin|Veronda|"
+                            "Saint Venant-Kirchhoff|linear|rigid"),
+        "Material model (doc/theory/03-materials.md). neo-Hookean, Saint "
+        "Venant-Kirchhoff, linear: Mu, Lambda. Mooney-Rivlin: C1, C2, a. "
+        "Veronda: Alpha, Beta, a. rigid: the body follows 'Rigid motion'.");
+      prm.declare_entry("Density",
+                        "1",
+                        Patterns::Double(0.),
+                        "Reference density rho0 (mass per reference volume).");
+      prm.declare_entry("Mu", "1", Patterns::Double(), "Lame shear modulus.");
+      prm.declare_entry("Lambda", "1", Patterns::Double(), "Lame lambda.");
+      prm.declare_entry("C1", "1", Patterns::Double(), "Mooney-Rivlin C1.");
+      prm.declare_entry("C2", "0", Patterns::Double(), "Mooney-Rivlin C2.");
+      prm.declare_entry("a",
+                        "1",
+                        Patterns::Double(),
+                        "Compressibility a of Mooney-Rivlin and Veronda.");
+      prm.declare_entry("Alpha", "1", Patterns::Double(), "Veronda alpha.");
+      prm.declare_entry("Beta", "1", Patterns::Double(), "Veronda beta.");
+      prm.enter_subsection("Fiber");
+      prm.declare_entry("Enabled",
+                        "false",
+                        Patterns::Bool(),
+                        "Add fiber reinforcement to the ground material "
+                        "(not for linear and rigid).");
+      prm.declare_entry("Alpha", "0", Patterns::Double(), "Fiber alpha.");
+      prm.declare_entry("Beta", "1", Patterns::Double(), "Fiber beta.");
+      prm.declare_entry("Direction",
+                        "1; 0; 0",
+                        Patterns::Anything(),
+                        "Fiber direction in the reference configuration: "
+                        "three expressions in x, y, z separated by ';' "
+                        "(normalized where evaluated).");
+      prm.leave_subsection();
+      prm.enter_subsection("Rigid motion");
+      declare_motion(prm, "rigid body");
+      prm.leave_subsection();
+    }
+
+
+    void
+    BodyParameters::parse(ParameterHandler &prm)
+    {
+      name    = prm.get("Name");
+      id      = prm.get_integer("Material id");
+      model   = prm.get("Model");
+      density = prm.get_double("Density");
+      mu      = prm.get_double("Mu");
+      lambda  = prm.get_double("Lambda");
+      C1      = prm.get_double("C1");
+      C2      = prm.get_double("C2");
+      a       = prm.get_double("a");
+      alpha   = prm.get_double("Alpha");
+      beta    = prm.get_double("Beta");
+      prm.enter_subsection("Fiber");
+      fiber           = prm.get_bool("Enabled");
+      fiber_alpha     = prm.get_double("Alpha");
+      fiber_beta      = prm.get_double("Beta");
+      fiber_direction = prm.get("Direction");
+      prm.leave_subsection();
+      prm.enter_subsection("Rigid motion");
+      rigid_motion = parse_motion(prm);
+      prm.leave_subsection();
+    }
+
+
+    void
+    DirichletParameters::declare(ParameterHandler &prm)
+    {
+      prm.declare_entry("Boundary id",
+                        "0",
+                        Patterns::Integer(0, 255),
+                        "The boundary id (gmsh physical surface tag).");
+      prm.declare_entry("Components",
+                        "xyz",
+                        Patterns::Selection("xyz|x|y|z|xy|xz|yz"),
+                        "Which displacement components are prescribed.");
+      declare_motion(prm, "boundary");
+    }
+
+
+    void
+    DirichletParameters::parse(ParameterHandler &prm)
+    {
+      boundary_id = prm.get_integer("Boundary id");
+      components  = prm.get("Components");
+      motion      = parse_motion(prm);
+    }
+
+
+    void
+    TractionParameters::declare(ParameterHandler &prm)
+    {
+      prm.declare_entry("Boundary id",
+                        "0",
+                        Patterns::Integer(0, 255),
+                        "The boundary id (gmsh physical surface tag).");
+      prm.declare_entry("Traction",
+                        "0, 0, 0",
+                        Patterns::List(Patterns::Double(), 3, 3),
+                        "Dead traction t0 per unit reference area at load "
+                        "factor 1" +
+                          vector_pattern_doc);
+    }
+
+
+    void
+    TractionParameters::parse(ParameterHandler &prm)
+    {
+      boundary_id = prm.get_integer("Boundary id");
+      traction    = parse_vector(prm.get("Traction"), "Traction");
+    }
+
+
+    void
+    OutputParameters::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry("Directory",
+                        "output",
+                        Patterns::Anything(),
+                        "Folder for VTU/PVD files and the convergence log "
+                        "(relative to the current folder); created if "
+                        "missing.");
+      prm.declare_entry("Base name",
+                        "solution",
+                        Patterns::Anything(),
+                        "Files are <base>-NNNN.vtu, <base>.pvd and "
+                        "<base>-convergence.csv.");
+      prm.declare_entry("Write VTU",
+                        "true",
+                        Patterns::Bool(),
+                        "Write a VTU file per converged increment and the "
+                        "PVD series.");
+      prm.declare_entry("Print timing",
+                        "true",
+                        Patterns::Bool(),
+                        "Print the wall-clock time summary at the end.");
+      prm.leave_subsection();
+    }
+
+
+    void
+    OutputParameters::parse(ParameterHandler &prm, const std::string &)
+    {
+      prm.enter_subsection("Output");
+      directory    = prm.get("Directory");
+      base_name    = prm.get("Base name");
+      write_vtu    = prm.get_bool("Write VTU");
+      print_timing = prm.get_bool("Print timing");
+      prm.leave_subsection();
+    }
+
+
+    void
+    SceneParameters::declare(ParameterHandler &prm,
+                             const unsigned int n_bodies,
+                             const unsigned int n_dirichlet,
+                             const unsigned int n_tractions)
+    {
+      declare_counts(prm);
+      MeshParameters::declare(prm);
+      prm.enter_subsection("Discretization");
+      prm.declare_entry("Polynomial degree",
+                        "1",
+                        Patterns::Integer(1, 2),
+                        "1: linear tetrahedra (fast); 2: quadratic "
+                        "tetrahedra (accurate, no locking in bending).");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Bodies");
+      for (unsigned int i = 0; i < n_bodies; ++i)
+        {
+          prm.enter_subsection("Body " + std::to_string(i));
+          BodyParameters::declare(prm);
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Boundary conditions");
+      for (unsigned int i = 0; i < n_dirichlet; ++i)
+        {
+          prm.enter_subsection("Dirichlet " + std::to_string(i));
+          DirichletParameters::declare(prm);
+          prm.leave_subsection();
+        }
+      for (unsigned int i = 0; i < n_tractions; ++i)
+        {
+          prm.enter_subsection("Traction " + std::to_string(i));
+          TractionParameters::declare(prm);
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Loads");
+      prm.declare_entry("Gravity",
+                        "0, 0, 0",
+                        Patterns::List(Patterns::Double(), 3, 3),
+                        "Body force per unit mass g at load factor 1 "
+                        "(multiplied by each body's density)" +
+                          vector_pattern_doc);
+      prm.leave_subsection();
+
+      Solvers::IncrementalNewtonSolver::Parameters::declare(prm);
+      OutputParameters::declare(prm);
+    }
+
+
+    void
+    SceneParameters::parse(ParameterHandler &prm, const std::string &dir)
+    {
+      mesh.parse(prm, dir);
+      prm.enter_subsection("Discretization");
+      degree = prm.get_integer("Polynomial degree");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Bodies");
+      for (unsigned int i = 0; i < bodies.size(); ++i)
+        {
+          prm.enter_subsection("Body " + std::to_string(i));
+          bodies[i].parse(prm);
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Boundary conditions");
+      for (unsigned int i = 0; i < dirichlet.size(); ++i)
+        {
+          prm.enter_subsection("Dirichlet " + std::to_string(i));
+          dirichlet[i].parse(prm);
+          prm.leave_subsection();
+        }
+      for (unsigned int i = 0; i < tractions.size(); ++i)
+        {
+          prm.enter_subsection("Traction " + std::to_string(i));
+          tractions[i].parse(prm);
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Loads");
+      gravity = parse_vector(prm.get("Gravity"), "Gravity");
+      prm.leave_subsection();
+
+      solver.parse(prm);
+      output.parse(prm, dir);
+    }
+
+
+    SceneParameters
+    SceneParameters::parse_text(const std::string &text,
+                                const std::string &name,
+                                const std::string &directory)
+    {
+      const Counts     counts = read_counts(text, name);
+      ParameterHandler prm;
+      declare(prm, counts.bodies, counts.dirichlet, counts.tractions);
+      std::istringstream in(text);
+      prm.parse_input(in, name);
+      SceneParameters p;
+      p.bodies.resize(counts.bodies);
+      p.dirichlet.resize(counts.dirichlet);
+      p.tractions.resize(counts.tractions);
+      p.parse(prm, directory);
+      return p;
+    }
+
+
+    SceneParameters
+    SceneParameters::from_file(const std::string &filename)
+    {
+      std::ifstream in(filename);
+      AssertThrow(in.good(),
+                  ExcMessage("cannot open the parameter file '" + filename +
+                             "'"));
+      std::stringstream text;
+      text << in.rdbuf();
+      const auto slash = filename.rfind('/');
+      const std::string directory =
+        slash == std::string::npos ? "" : filename.substr(0, slash);
+      return parse_text(text.str(), filename, directory);
+    }
+
+
+    SceneParameters
+    SceneParameters::from_string(const std::string &text)
+    {
+      return parse_text(text, "input", "");
+    }
+  } // namespace Scene
+} // namespace TissueContact

@@ -1,0 +1,296 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/materials/fiber_reinforcement.h>
+#include <tissue_contact/materials/linear_elastic.h>
+#include <tissue_contact/materials/mooney_rivlin.h>
+#include <tissue_contact/materials/neo_hookean.h>
+#include <tissue_contact/materials/saint_venant_kirchhoff.h>
+#include <tissue_contact/materials/veronda.h>
+#include <tissue_contact/scene/scene.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace TissueContact
+{
+  namespace Scene
+  {
+    std::unique_ptr<Materials::Material>
+    create_material(const BodyParameters &b)
+    {
+      using namespace Materials;
+      const std::string where = "body '" + b.name + "' (material id " +
+                                std::to_string(b.id) + "): ";
+      try
+        {
+          if (b.model == "rigid")
+            return nullptr;
+          if (b.model == "linear")
+            {
+              AssertThrow(!b.fiber,
+                          ExcMessage("fibers cannot be added to the linear "
+                                     "model; use a hyperelastic one"));
+              return std::make_unique<LinearElastic>(b.mu, b.lambda);
+            }
+          std::unique_ptr<HyperelasticMaterial> ground;
+          if (b.model == "neo-Hookean")
+            ground = std::make_unique<NeoHookean>(b.mu, b.lambda);
+          else if (b.model == "Mooney-Rivlin")
+            ground = std::make_unique<MooneyRivlin>(b.C1, b.C2, b.a);
+          else if (b.model == "Veronda")
+            ground = std::make_unique<Veronda>(b.alpha, b.beta, b.a);
+          else if (b.model == "Saint Venant-Kirchhoff")
+            ground = std::make_unique<SaintVenantKirchhoff>(b.mu, b.lambda);
+          else
+            AssertThrow(false,
+                        ExcMessage("unknown material model '" + b.model + "'"));
+          if (!b.fiber)
+            return ground;
+          auto direction = std::make_shared<FunctionParser<3>>(3);
+          try
+            {
+              direction->initialize("x,y,z",
+                                    b.fiber_direction,
+                                    std::map<std::string, double>());
+            }
+          catch (...)
+            {
+              AssertThrow(false,
+                          ExcMessage("cannot parse the fiber Direction '" +
+                                     b.fiber_direction +
+                                     "': give three expressions in x, y, z "
+                                     "separated by ';'"));
+            }
+          return std::make_unique<FiberReinforcement>(std::move(ground),
+                                                      b.fiber_alpha,
+                                                      b.fiber_beta,
+                                                      direction);
+        }
+      catch (const ExceptionBase &e)
+        {
+          AssertThrow(false, ExcMessage(where + error_message(e)));
+        }
+      return nullptr;
+    }
+
+
+    Scene::Scene(const SceneParameters &p)
+      : parameters(p)
+    {
+      std::set<types::material_id> ids;
+      for (const auto &b : parameters.bodies)
+        {
+          AssertThrow(ids.insert(b.id).second,
+                      ExcMessage("two bodies use material id " +
+                                 std::to_string(b.id)));
+          materials.push_back(create_material(b));
+        }
+      create_mesh();
+      check_mesh();
+    }
+
+
+    void
+    Scene::create_mesh()
+    {
+      const MeshParameters &m = parameters.mesh;
+      if (m.source == "box")
+        {
+          GridGenerator::subdivided_hyper_rectangle_with_simplices(
+            triangulation, m.subdivisions, m.lower, m.upper);
+          // boundary ids 0..5 on the faces x-, x+, y-, y+, z-, z+ (deal.II
+          // 9.4 cannot colorize simplex boxes)
+          for (const auto &cell : triangulation.active_cell_iterators())
+            for (const auto &face : cell->face_iterators())
+              if (face->at_boundary())
+                {
+                  const Point<3> c = face->center();
+                  for (unsigned int d = 0; d < 3; ++d)
+                    {
+                      const double tol = 1e-8 * (m.upper[d] - m.lower[d]);
+                      if (std::abs(c[d] - m.lower[d]) < tol)
+                        face->set_boundary_id(2 * d);
+                      else if (std::abs(c[d] - m.upper[d]) < tol)
+                        face->set_boundary_id(2 * d + 1);
+                    }
+                }
+        }
+      else
+        {
+          AssertThrow(std::ifstream(m.file).good(),
+                      ExcMessage("mesh file '" + m.file +
+                                 "' does not exist or cannot be read"));
+          GridIn<3> grid_in;
+          grid_in.attach_triangulation(triangulation);
+          std::ifstream in(m.file);
+          try
+            {
+              grid_in.read_msh(in);
+            }
+          catch (const std::exception &e)
+            {
+              AssertThrow(false,
+                          ExcMessage("cannot read mesh file '" + m.file +
+                                     "' as a gmsh .msh file: " +
+                                     error_message(e)));
+            }
+        }
+      if (m.scale != 1.)
+        GridTools::scale(m.scale, triangulation);
+      if (m.distortion > 0.)
+        GridTools::distort_random(m.distortion, triangulation, true, 20261122);
+    }
+
+
+    void
+    Scene::check_mesh() const
+    {
+      AssertThrow(triangulation.n_active_cells() > 0,
+                  ExcMessage("the mesh has no cells"));
+      std::set<types::material_id> body_ids;
+      for (const auto &b : parameters.bodies)
+        body_ids.insert(b.id);
+      std::set<types::material_id> mesh_ids;
+      std::set<types::boundary_id> boundary_ids;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        {
+          AssertThrow(cell->reference_cell() == ReferenceCells::Tetrahedron,
+                      ExcMessage("the mesh has a cell that is not a "
+                                 "tetrahedron (cell " +
+                                 std::to_string(cell->active_cell_index()) +
+                                 "); only tetrahedral meshes are supported"));
+          mesh_ids.insert(cell->material_id());
+          AssertThrow(body_ids.count(cell->material_id()) > 0,
+                      ExcMessage("the mesh has cells with material id " +
+                                 std::to_string(cell->material_id()) +
+                                 " but no body in the parameter file uses it; "
+                                 "add a 'Body' subsection with this Material "
+                                 "id"));
+          const Tensor<1, 3> e1 = cell->vertex(1) - cell->vertex(0);
+          const Tensor<1, 3> e2 = cell->vertex(2) - cell->vertex(0);
+          const Tensor<1, 3> e3 = cell->vertex(3) - cell->vertex(0);
+          const double volume   = (e1 * cross_product_3d(e2, e3)) / 6.;
+          double       h        = 0.;
+          for (unsigned int l = 0; l < cell->n_lines(); ++l)
+            h = std::max(h, cell->line(l)->diameter());
+          std::ostringstream where;
+          where << "cell " << cell->active_cell_index() << " (material id "
+                << int(cell->material_id()) << ", first vertex "
+                << cell->vertex(0) << ")";
+          AssertThrow(volume > 0. || std::abs(volume) <= 1e-10 * h * h * h,
+                      ExcMessage("the mesh has an inverted tetrahedron: " +
+                                 where.str() +
+                                 " has negative volume; fix the element's "
+                                 "node order in the mesh"));
+          AssertThrow(volume > 1e-10 * h * h * h,
+                      ExcMessage("the mesh has a degenerate (flat) "
+                                 "tetrahedron: " +
+                                 where.str() + "; remesh"));
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              boundary_ids.insert(cell->face(f)->boundary_id());
+        }
+      for (const auto &b : parameters.bodies)
+        AssertThrow(mesh_ids.count(b.id) > 0,
+                    ExcMessage("body '" + b.name + "' uses material id " +
+                               std::to_string(b.id) +
+                               ", which no cell of the mesh has"));
+      const auto check_boundary = [&](const types::boundary_id id,
+                                      const std::string &      what) {
+        std::ostringstream present;
+        for (const auto i : boundary_ids)
+          present << " " << int(i);
+        AssertThrow(boundary_ids.count(id) > 0,
+                    ExcMessage(what + ": boundary id " + std::to_string(id) +
+                               " does not occur in the mesh (its boundary "
+                               "ids are:" +
+                               present.str() + ")"));
+      };
+      for (unsigned int i = 0; i < parameters.dirichlet.size(); ++i)
+        check_boundary(parameters.dirichlet[i].boundary_id,
+                       "Dirichlet " + std::to_string(i));
+      for (unsigned int i = 0; i < parameters.tractions.size(); ++i)
+        check_boundary(parameters.tractions[i].boundary_id,
+                       "Traction " + std::to_string(i));
+    }
+
+
+    std::map<types::material_id, Elasticity::BodyData>
+    Scene::body_data() const
+    {
+      std::map<types::material_id, Elasticity::BodyData> data;
+      for (unsigned int i = 0; i < parameters.bodies.size(); ++i)
+        data[parameters.bodies[i].id] = {materials[i].get(),
+                                         parameters.bodies[i].density};
+      return data;
+    }
+
+
+    Elasticity::DeadLoads
+    Scene::dead_loads() const
+    {
+      Elasticity::DeadLoads loads;
+      loads.gravity = parameters.gravity;
+      for (const auto &t : parameters.tractions)
+        loads.tractions[t.boundary_id] += t.traction;
+      return loads;
+    }
+
+
+    std::vector<PrescribedDof>
+    Scene::prescribed_dofs(const Elasticity::Discretization &disc) const
+    {
+      const std::vector<Point<3>> X = disc.support_points();
+      const auto &                fe = disc.fe;
+      std::vector<PrescribedDof>  result;
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+
+      for (const auto &d : parameters.dirichlet)
+        {
+          const bool use[3] = {d.components.find('x') != std::string::npos,
+                               d.components.find('y') != std::string::npos,
+                               d.components.find('z') != std::string::npos};
+          std::set<types::global_dof_index> seen;
+          for (const auto &cell : disc.dof_handler.active_cell_iterators())
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary() &&
+                  cell->face(f)->boundary_id() == d.boundary_id)
+                {
+                  cell->face(f)->get_dof_indices(face_dofs);
+                  for (unsigned int k = 0; k < face_dofs.size(); ++k)
+                    {
+                      const unsigned int c =
+                        fe.face_system_to_component_index(k, f).first;
+                      if (use[c] && seen.insert(face_dofs[k]).second)
+                        result.push_back(
+                          {face_dofs[k], c, X[face_dofs[k]], &d.motion});
+                    }
+                }
+        }
+
+      for (const auto &b : parameters.bodies)
+        if (b.model == "rigid")
+          {
+            std::set<types::global_dof_index> seen;
+            for (const auto &cell : disc.dof_handler.active_cell_iterators())
+              if (cell->material_id() == b.id)
+                {
+                  cell->get_dof_indices(dofs);
+                  for (unsigned int k = 0; k < dofs.size(); ++k)
+                    if (seen.insert(dofs[k]).second)
+                      result.push_back({dofs[k],
+                                        fe.system_to_component_index(k).first,
+                                        X[dofs[k]],
+                                        &b.rigid_motion});
+                }
+          }
+      return result;
+    }
+  } // namespace Scene
+} // namespace TissueContact

@@ -1,0 +1,152 @@
+#include <deal.II/dofs/dof_tools.h>
+
+#include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/output/convergence_log.h>
+#include <tissue_contact/output/vtu_writer.h>
+#include <tissue_contact/simulation/static_simulation.h>
+
+#include <filesystem>
+
+namespace TissueContact
+{
+  StaticSimulation::StaticSimulation(
+    const Scene::SceneParameters &parameters,
+    std::ostream &                out)
+    : scene(parameters)
+    , disc(scene.triangulation, parameters.degree)
+    , assembler(disc, scene.body_data(), scene.dead_loads())
+    , prescribed(scene.prescribed_dofs(disc))
+    , u(disc.n_dofs())
+    , out(out)
+  {}
+
+
+  bool
+  StaticSimulation::assemble(const Vector<double> &u,
+                             const double          load_factor,
+                             Vector<double> &      R,
+                             SparseMatrix<double> *K)
+  {
+    return assembler.assemble(u, load_factor, R, K);
+  }
+
+
+  std::map<types::global_dof_index, double>
+  StaticSimulation::prescribed_values(const double load_factor) const
+  {
+    std::map<types::global_dof_index, double> values;
+    for (const auto &p : prescribed)
+      values[p.dof] =
+        p.motion->displacement(p.X, load_factor)[p.component];
+    return values;
+  }
+
+
+  double
+  StaticSimulation::external_force_norm(const double load_factor) const
+  {
+    return load_factor * assembler.external_force().l2_norm();
+  }
+
+
+  Vector<double>
+  StaticSimulation::quasi_viscosity_diagonal(const double eta) const
+  {
+    return assembler.quasi_viscosity_diagonal(eta);
+  }
+
+
+  std::vector<std::vector<bool>>
+  StaticSimulation::constant_modes() const
+  {
+    std::vector<std::vector<bool>> modes;
+    DoFTools::extract_constant_modes(disc.dof_handler,
+                                     ComponentMask(3, true),
+                                     modes);
+    return modes;
+  }
+
+
+  Solvers::SolveStatistics
+  StaticSimulation::solve_quietly()
+  {
+    Solvers::IncrementalNewtonSolver solver(scene.parameters.solver);
+    u = 0.;
+    return solver.solve(*this, u);
+  }
+
+
+  Solvers::SolveStatistics
+  StaticSimulation::run()
+  {
+    const auto &p = scene.parameters;
+    TimerOutput timer(out,
+                      p.output.print_timing ? TimerOutput::summary :
+                                              TimerOutput::never,
+                      TimerOutput::wall_times);
+
+    out << "TissueContact static analysis\n"
+        << "  mesh: " << scene.triangulation.n_active_cells()
+        << " tetrahedra, " << scene.triangulation.n_vertices()
+        << " vertices; P" << p.degree << " elements, " << disc.n_dofs()
+        << " unknowns, " << prescribed.size() << " prescribed\n";
+    for (const auto &b : p.bodies)
+      out << "  body '" << b.name << "' (material id " << int(b.id)
+          << "): " << b.model << (b.fiber ? " + fibers" : "") << "\n";
+    out << "  linear solver: " << p.solver.linear_solver.type << "\n";
+
+    std::filesystem::create_directories(p.output.directory);
+    const std::string csv =
+      p.output.directory + "/" + p.output.base_name + "-convergence.csv";
+    Output::ConvergenceLog  log(out, csv);
+    Output::VtuSeriesWriter vtu(p.output.directory, p.output.base_name);
+
+    Solvers::IncrementalNewtonSolver solver(p.solver);
+    solver.on_iteration = [&](const Solvers::IterationInfo &i) {
+      log.iteration(i);
+    };
+    solver.on_cutback = [&](const double lambda, const std::string &why) {
+      log.cutback(lambda, why);
+    };
+    solver.on_increment =
+      [&](const unsigned int, const double lambda, const Vector<double> &u) {
+        if (p.output.write_vtu)
+          {
+            TimerOutput::Scope scope(timer, "output");
+            vtu.write(disc, assembler, u, lambda);
+          }
+      };
+
+    u = 0.;
+    if (p.output.write_vtu)
+      vtu.write(disc, assembler, u, 0.);
+
+    Solvers::SolveStatistics statistics;
+    try
+      {
+        statistics = solver.solve(*this, u, &timer);
+      }
+    catch (const std::exception &e)
+      {
+        const std::string kept =
+          p.output.write_vtu ?
+            "; the converged increments are kept in " + vtu.pvd_file() :
+            "";
+        AssertThrow(false, ExcMessage(error_message(e) + kept));
+      }
+
+    double u_max = 0.;
+    for (const double v : u)
+      u_max = std::max(u_max, std::abs(v));
+    out << "Converged: " << statistics.increments << " increments ("
+        << statistics.cutbacks << " cut back), "
+        << statistics.newton_iterations << " Newton iterations, "
+        << statistics.linear_iterations << " linear iterations\n"
+        << "  max |u_i| = " << u_max
+        << ", min J = " << assembler.min_jacobian(u) << "\n"
+        << "  convergence log: " << csv << "\n";
+    if (p.output.write_vtu)
+      out << "  results: " << vtu.pvd_file() << " (open in ParaView)\n";
+    return statistics;
+  }
+} // namespace TissueContact

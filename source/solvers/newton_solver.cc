@@ -1,0 +1,357 @@
+#include <deal.II/numerics/matrix_tools.h>
+
+#include <tissue_contact/solvers/newton_solver.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace TissueContact
+{
+  namespace Solvers
+  {
+    void
+    IncrementalNewtonSolver::Parameters::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Load stepping");
+      prm.declare_entry("Initial increment",
+                        "0.25",
+                        Patterns::Double(0., 1.),
+                        "First increment of the load factor (0 -> 1).");
+      prm.declare_entry("Minimum increment",
+                        "1e-3",
+                        Patterns::Double(0., 1.),
+                        "If a failed increment would be cut below this "
+                        "size, the run stops with an error.");
+      prm.declare_entry("Maximum increment",
+                        "1",
+                        Patterns::Double(0., 1.),
+                        "Upper bound of the load increment.");
+      prm.declare_entry("Growth factor",
+                        "1.5",
+                        Patterns::Double(1.),
+                        "Factor by which the increment grows after an easy "
+                        "increment.");
+      prm.declare_entry("Easy iterations",
+                        "5",
+                        Patterns::Integer(1),
+                        "An increment that converged within this many Newton "
+                        "iterations is easy: the next one may grow.");
+      prm.declare_entry("Predictor",
+                        "two-point",
+                        Patterns::Selection("two-point|constant"),
+                        "Initial guess of an increment: extrapolate the last "
+                        "two converged states (two-point) or start from the "
+                        "last one (constant).");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Newton");
+      prm.declare_entry("Maximum iterations",
+                        "25",
+                        Patterns::Integer(1),
+                        "Newton iterations per increment before it is cut "
+                        "back.");
+      prm.declare_entry("Residual tolerance",
+                        "1e-8",
+                        Patterns::Double(0.),
+                        "Converged when |R| on the free DoFs is below this "
+                        "fraction of the force scale (applied loads or "
+                        "reactions, whichever is larger).");
+      prm.declare_entry("Absolute tolerance",
+                        "1e-12",
+                        Patterns::Double(0.),
+                        "Converged when |R| on the free DoFs is below this "
+                        "value (for unloaded problems).");
+      prm.declare_entry("Maximum line search halvings",
+                        "12",
+                        Patterns::Integer(0),
+                        "LOOP 3: halve the Newton step at most this often "
+                        "looking for a step with no inverted element and a "
+                        "smaller residual.");
+      prm.declare_entry("Quasi-viscosity",
+                        "false",
+                        Patterns::Bool(),
+                        "Add the nodal quasi-viscosity D/dt to the tangent "
+                        "(dissertation eq. 4.51): regularizes Newton near "
+                        "bifurcations; the solution is unchanged.");
+      prm.declare_entry("Viscosity factor",
+                        "0.1",
+                        Patterns::Double(0.),
+                        "eta in D_a = eta * sum_e mu_e h_e / n_e, a fraction "
+                        "of the stiffness diagonal.");
+      prm.declare_entry("Viscosity time step",
+                        "1",
+                        Patterns::Double(1e-300),
+                        "dt of the quasi-viscosity (dissertation: 1).");
+      prm.leave_subsection();
+
+      LinearSolver::Parameters::declare(prm);
+    }
+
+
+    void
+    IncrementalNewtonSolver::Parameters::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Load stepping");
+      initial_increment   = prm.get_double("Initial increment");
+      minimum_increment   = prm.get_double("Minimum increment");
+      maximum_increment   = prm.get_double("Maximum increment");
+      growth_factor       = prm.get_double("Growth factor");
+      easy_iterations     = prm.get_integer("Easy iterations");
+      two_point_predictor = prm.get("Predictor") == "two-point";
+      prm.leave_subsection();
+      AssertThrow(minimum_increment > 0. &&
+                    minimum_increment <= initial_increment &&
+                    initial_increment <= maximum_increment,
+                  ExcMessage("Load stepping: need 0 < Minimum increment <= "
+                             "Initial increment <= Maximum increment"));
+
+      prm.enter_subsection("Newton");
+      max_iterations      = prm.get_integer("Maximum iterations");
+      residual_tolerance  = prm.get_double("Residual tolerance");
+      absolute_tolerance  = prm.get_double("Absolute tolerance");
+      max_halvings        = prm.get_integer("Maximum line search halvings");
+      quasi_viscosity     = prm.get_bool("Quasi-viscosity");
+      viscosity_factor    = prm.get_double("Viscosity factor");
+      viscosity_time_step = prm.get_double("Viscosity time step");
+      prm.leave_subsection();
+
+      linear_solver.parse(prm);
+    }
+
+
+    IncrementalNewtonSolver::IncrementalNewtonSolver(
+      const Parameters &parameters)
+      : parameters(parameters)
+    {}
+
+
+    std::string
+    IncrementalNewtonSolver::newton(NonlinearProblem & problem,
+                                    Vector<double> &   u,
+                                    const double       load_factor,
+                                    const unsigned int increment,
+                                    SolveStatistics &  statistics,
+                                    TimerOutput *      timer)
+    {
+      const auto n = problem.n_dofs();
+      if (K.empty() || K.m() != n)
+        K.reinit(problem.sparsity_pattern());
+      if (parameters.quasi_viscosity && viscosity.size() != n)
+        viscosity =
+          problem.quasi_viscosity_diagonal(parameters.viscosity_factor);
+
+      const auto targets = problem.prescribed_values(load_factor);
+      std::vector<bool> prescribed(n, false);
+      for (const auto &t : targets)
+        prescribed[t.first] = true;
+
+      const auto norms = [&](const Vector<double> &R) {
+        double free = 0., reaction = 0.;
+        for (types::global_dof_index i = 0; i < n; ++i)
+          (prescribed[i] ? reaction : free) += R[i] * R[i];
+        return std::make_pair(std::sqrt(free), std::sqrt(reaction));
+      };
+      const auto section = [&](const char *name) {
+        return timer != nullptr ?
+                 std::make_unique<TimerOutput::Scope>(*timer, name) :
+                 std::unique_ptr<TimerOutput::Scope>();
+      };
+
+      const LinearSolver linear_solver(parameters.linear_solver,
+                                       problem.constant_modes());
+      Vector<double> R(n), R_trial(n), du(n), rhs(n), u_trial(n);
+      const double   f_ext = problem.external_force_norm(load_factor);
+
+      for (unsigned int it = 0;; ++it)
+        {
+          std::map<types::global_dof_index, double> gap;
+          double                                    gap_norm = 0.;
+          for (const auto &t : targets)
+            {
+              const double g = t.second - u[t.first];
+              gap[t.first]   = g;
+              gap_norm += g * g;
+            }
+          gap_norm = std::sqrt(gap_norm);
+
+          bool valid;
+          {
+            const auto scope = section("assembly");
+            valid            = problem.assemble(u, load_factor, R, &K);
+          }
+          if (!valid)
+            return "an element is inverted at the start of the Newton "
+                   "iteration";
+          const auto [r, reaction] = norms(R);
+          if (!std::isfinite(r))
+            return "the residual is not finite";
+          const double tolerance =
+            std::max(parameters.absolute_tolerance,
+                     parameters.residual_tolerance * std::max(f_ext, reaction));
+
+          IterationInfo info;
+          info.increment     = increment;
+          info.load_factor   = load_factor;
+          info.iteration     = it;
+          info.residual_norm = r;
+
+          if (gap_norm == 0. && r <= tolerance)
+            {
+              info.step_length = 0.;
+              if (on_iteration)
+                on_iteration(info);
+              return "";
+            }
+          if (it == parameters.max_iterations)
+            {
+              std::ostringstream s;
+              s << "Newton did not converge in " << it
+                << " iterations (|R| = " << r << ", tolerance " << tolerance
+                << ")";
+              return s.str();
+            }
+
+          // LOOP 2: (K + D/dt) du = -R, du = gap on prescribed DoFs
+          {
+            const auto scope = section("linear solve");
+            if (parameters.quasi_viscosity)
+              for (types::global_dof_index i = 0; i < n; ++i)
+                K.diag_element(i) +=
+                  viscosity[i] / parameters.viscosity_time_step;
+            rhs = R;
+            rhs *= -1.;
+            du  = 0.;
+            MatrixTools::apply_boundary_values(gap, K, du, rhs, true);
+            info.linear_iterations = linear_solver.solve(K, du, rhs);
+          }
+
+          // LOOP 3: line search
+          double s        = 1.;
+          bool   accepted = false;
+          for (unsigned int h = 0; h <= parameters.max_halvings; ++h, s *= 0.5)
+            {
+              u_trial = u;
+              u_trial.add(s, du);
+              bool trial_valid;
+              {
+                const auto scope = section("assembly");
+                trial_valid =
+                  problem.assemble(u_trial, load_factor, R_trial, nullptr);
+              }
+              if (!trial_valid)
+                continue;
+              const double r_trial = norms(R_trial).first;
+              if (gap_norm > 0. || r_trial < r || r_trial <= tolerance)
+                {
+                  accepted = true;
+                  break;
+                }
+            }
+          if (!accepted)
+            {
+              std::ostringstream msg;
+              msg << "the line search found no step without inverted "
+                     "elements and with a smaller residual after "
+                  << parameters.max_halvings << " halvings";
+              return msg.str();
+            }
+          u.swap(u_trial);
+          info.update_norm = s * du.l2_norm();
+          info.step_length = s;
+          ++statistics.newton_iterations;
+          statistics.linear_iterations += info.linear_iterations;
+          if (on_iteration)
+            on_iteration(info);
+        }
+    }
+
+
+    SolveStatistics
+    IncrementalNewtonSolver::solve(NonlinearProblem &problem,
+                                   Vector<double> &  u,
+                                   TimerOutput *     timer)
+    {
+      SolveStatistics statistics;
+      double          lambda = 0., lambda_prev = 0.;
+      double          increment_size = parameters.initial_increment;
+      Vector<double>  u_prev(u), u_trial(u);
+      bool            have_previous = false;
+
+      while (lambda < 1. - 1e-12)
+        {
+          const double lambda_new = std::min(1., lambda + increment_size);
+          const unsigned int its_before = statistics.newton_iterations;
+
+          // two-point predictor on the free DoFs, prescribed DoFs at their
+          // exact targets (a linear extrapolation of a rotation would
+          // stretch the boundary)
+          u_trial              = u;
+          bool used_prediction = false;
+          if (parameters.two_point_predictor && have_previous)
+            {
+              const double c = (lambda_new - lambda) / (lambda - lambda_prev);
+              u_trial.add(c, u, -c, u_prev);
+              for (const auto &t : problem.prescribed_values(lambda_new))
+                u_trial[t.first] = t.second;
+              used_prediction = true;
+            }
+          std::string failure = newton(problem,
+                                       u_trial,
+                                       lambda_new,
+                                       statistics.increments + 1,
+                                       statistics,
+                                       timer);
+          if (!failure.empty() && used_prediction)
+            {
+              // the extrapolated guess may invert elements or lie outside
+              // Newton's basin: retry from the last converged state before
+              // cutting the increment
+              if (on_cutback)
+                on_cutback(lambda_new,
+                           failure + "; retrying without the predictor");
+              u_trial = u;
+              failure = newton(problem,
+                               u_trial,
+                               lambda_new,
+                               statistics.increments + 1,
+                               statistics,
+                               timer);
+            }
+
+          if (failure.empty())
+            {
+              u_prev.swap(u);
+              u.swap(u_trial);
+              lambda_prev   = lambda;
+              lambda        = lambda_new;
+              have_previous = true;
+              ++statistics.increments;
+              if (on_increment)
+                on_increment(statistics.increments, lambda, u);
+              if (statistics.newton_iterations - its_before <=
+                  parameters.easy_iterations)
+                increment_size =
+                  std::min(parameters.maximum_increment,
+                           increment_size * parameters.growth_factor);
+            }
+          else
+            {
+              ++statistics.cutbacks;
+              if (on_cutback)
+                on_cutback(lambda_new, failure + "; halving the increment");
+              increment_size *= 0.5;
+              std::ostringstream msg;
+              msg << "the static solve failed at load factor " << lambda_new
+                  << " (last converged: " << lambda << "): " << failure
+                  << "; the load increment fell below the minimum "
+                  << parameters.minimum_increment
+                  << ". Try smaller increments, Quasi-viscosity = true, or "
+                     "check the loads and boundary conditions";
+              AssertThrow(increment_size >= parameters.minimum_increment,
+                          ExcMessage(msg.str()));
+            }
+        }
+      return statistics;
+    }
+  } // namespace Solvers
+} // namespace TissueContact
