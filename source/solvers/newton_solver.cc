@@ -161,6 +161,7 @@ namespace TissueContact
                                        problem.constant_modes());
       Vector<double> R(n), R_trial(n), du(n), rhs(n), u_trial(n);
       const double   f_ext = problem.external_force_norm(load_factor);
+      double         r_first = 0.;
 
       for (unsigned int it = 0;; ++it)
         {
@@ -189,6 +190,9 @@ namespace TissueContact
             std::max(parameters.absolute_tolerance,
                      parameters.residual_tolerance * std::max(f_ext, reaction));
 
+          if (it == 0)
+            r_first = r;
+
           IterationInfo info;
           info.increment     = increment;
           info.load_factor   = load_factor;
@@ -214,10 +218,16 @@ namespace TissueContact
           // LOOP 2: (K + D/dt) du = -R, du = gap on prescribed DoFs
           {
             const auto scope = section("linear solve");
-            if (parameters.quasi_viscosity)
-              for (types::global_dof_index i = 0; i < n; ++i)
-                K.diag_element(i) +=
-                  viscosity[i] / parameters.viscosity_time_step;
+            // quasi-viscosity D/dt_k with dt_k = dt r_0 / r_k: full strength
+            // at the start of the increment, fading as the residual falls
+            // so that Newton keeps its quadratic rate near the solution
+            if (parameters.quasi_viscosity && r_first > 0.)
+              {
+                const double c =
+                  std::min(1., r / r_first) / parameters.viscosity_time_step;
+                for (types::global_dof_index i = 0; i < n; ++i)
+                  K.diag_element(i) += c * viscosity[i];
+              }
             rhs = R;
             rhs *= -1.;
             du  = 0.;

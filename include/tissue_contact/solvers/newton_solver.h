@@ -41,9 +41,10 @@ namespace TissueContact
      *   @f$u^{pred} = u_n + \frac{\lambda_{n+1}-\lambda_n}
      *   {\lambda_n-\lambda_{n-1}}(u_n - u_{n-1})@f$; a failed increment is
      *   halved and retried, an easy one lets the next grow;
-     * - LOOP 2, Newton: @f$(K + D/\Delta t)\,\delta u = -R@f$ with the
-     *   prescribed DoFs set to their remaining gap, optional quasi-viscosity
-     *   @f$D@f$;
+     * - LOOP 2, Newton: @f$(K + D/\Delta t_k)\,\delta u = -R@f$ with the
+     *   prescribed DoFs set to their remaining gap and the optional
+     *   quasi-viscosity @f$D@f$, @f$\Delta t_k = \Delta t\,|R_0|/|R_k|@f$
+     *   (it fades as the residual falls; doc/theory/04-solver.md);
      * - LOOP 3, line search: @f$s = 1, \frac12, \frac14, \dots@f$ until no
      *   element is inverted and @f$|R|@f$ decreased.
      * Convergence: the prescribed values are reached and

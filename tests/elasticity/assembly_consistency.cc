@@ -1,0 +1,157 @@
+// Element level, on a distorted two-body P1 and P2 mesh with gravity and a
+// traction: the assembled residual equals the finite-difference gradient of
+// the total potential energy, the assembled tangent equals the
+// finite-difference derivative of the residual and is symmetric, the total
+// external force equals rho g V + t A, and an inverted element is reported.
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <tissue_contact/elasticity/elastic_assembler.h>
+#include <tissue_contact/materials/fiber_reinforcement.h>
+#include <tissue_contact/materials/mooney_rivlin.h>
+#include <tissue_contact/materials/veronda.h>
+
+#include "../tests.h"
+
+using namespace dealii;
+using namespace TissueContact;
+using namespace TissueContactTests;
+
+void
+check(const unsigned int degree)
+{
+  deallog << "=== P" << degree << std::endl;
+  Triangulation<3> tria;
+  GridGenerator::subdivided_hyper_rectangle_with_simplices(
+    tria, {2, 2, 2}, Point<3>(0, 0, 0), Point<3>(1, 1, 1));
+  GridTools::distort_random(0.2, tria, true, 7);
+  for (const auto &cell : tria.active_cell_iterators())
+    {
+      cell->set_material_id(cell->center()[0] > 0.5 ? 1 : 0);
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && std::abs(face->center()[0] - 1.) < 1e-10)
+          face->set_boundary_id(1);
+    }
+
+  auto fiber = std::make_shared<FunctionParser<3>>(3);
+  fiber->initialize("x,y,z", "1; y; z", std::map<std::string, double>());
+  const Materials::FiberReinforcement m0(
+    std::make_unique<Materials::MooneyRivlin>(5., 1., 50.), 2., 3., fiber);
+  const Materials::Veronda m1(7., 8., 100.);
+
+  const Elasticity::Discretization disc(tria, degree);
+  Elasticity::DeadLoads            loads;
+  loads.gravity      = Tensor<1, 3>({0., 0., -2.});
+  loads.tractions[1] = Tensor<1, 3>({0.5, 0.3, -1.});
+  const Elasticity::ElasticAssembler assembler(disc,
+                                               {{0, {&m0, 3.}}, {1, {&m1, 1.}}},
+                                               loads);
+
+  // total external force, summed per component, against rho0 g V per body
+  // (volumes from the vertices) plus t A (the face x = 1 has area 1)
+  Tensor<1, 3> total;
+  {
+    std::vector<types::global_dof_index> dofs(disc.fe.n_dofs_per_cell());
+    std::vector<bool>                    seen(disc.n_dofs(), false);
+    for (const auto &cell : disc.dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int k = 0; k < dofs.size(); ++k)
+          if (!seen[dofs[k]])
+            {
+              seen[dofs[k]] = true;
+              total[disc.fe.system_to_component_index(k).first] +=
+                assembler.external_force()[dofs[k]];
+            }
+      }
+  }
+  double mass = 0.;
+  for (const auto &cell : tria.active_cell_iterators())
+    mass += (cell->material_id() == 0 ? 3. : 1.) *
+            ((cell->vertex(1) - cell->vertex(0)) *
+             cross_product_3d(cell->vertex(2) - cell->vertex(0),
+                              cell->vertex(3) - cell->vertex(0))) /
+            6.;
+  const Tensor<1, 3> expected = mass * loads.gravity + loads.tractions[1];
+  deallog << "total external force " << total << ", error "
+          << error_bound((total - expected).norm()) << std::endl;
+
+  Vector<double> u(disc.n_dofs());
+  for (auto &v : u)
+    v = random_value(-0.05, 0.05);
+  const double lambda = 0.7;
+
+  Vector<double>       R(disc.n_dofs());
+  SparseMatrix<double> K(disc.sparsity_pattern);
+  const bool           valid = assembler.assemble(u, lambda, R, &K);
+  deallog << "valid " << valid << ", min J "
+          << (assembler.min_jacobian(u) > 0.5 ? "> 0.5" : "<= 0.5")
+          << ", unknowns " << disc.n_dofs() << std::endl;
+
+  // residual vs gradient of the energy
+  const double   h = 1e-6;
+  Vector<double> R_fd(disc.n_dofs()), up(u), um(u);
+  for (types::global_dof_index i = 0; i < disc.n_dofs(); ++i)
+    {
+      up[i] += h;
+      um[i] -= h;
+      R_fd[i] =
+        (assembler.energy(up, lambda) - assembler.energy(um, lambda)) / (2 * h);
+      up[i] = um[i] = u[i];
+    }
+  Vector<double> diff(R);
+  diff -= R_fd;
+  deallog << "residual vs FD gradient of the energy: relative error "
+          << error_bound(diff.l2_norm() / R.l2_norm()) << std::endl;
+
+  // tangent vs FD of the residual, column by column
+  double         err2 = 0., norm2 = 0.;
+  Vector<double> Rp(disc.n_dofs()), Rm(disc.n_dofs());
+  for (types::global_dof_index j = 0; j < disc.n_dofs(); ++j)
+    {
+      up[j] += h;
+      um[j] -= h;
+      assembler.assemble(up, lambda, Rp, nullptr);
+      assembler.assemble(um, lambda, Rm, nullptr);
+      up[j] = um[j] = u[j];
+      for (types::global_dof_index i = 0; i < disc.n_dofs(); ++i)
+        {
+          const double fd = (Rp[i] - Rm[i]) / (2 * h);
+          const double k  = disc.sparsity_pattern.exists(i, j) ? K(i, j) : 0.;
+          err2 += (k - fd) * (k - fd);
+          norm2 += k * k;
+        }
+    }
+  deallog << "tangent vs FD of the residual: relative error "
+          << error_bound(std::sqrt(err2 / norm2)) << std::endl;
+
+  double asym = 0.;
+  for (types::global_dof_index i = 0; i < disc.n_dofs(); ++i)
+    for (auto e = K.begin(i); e != K.end(i); ++e)
+      asym = std::max(asym, std::abs(e->value() - K(e->column(), i)));
+  deallog << "tangent asymmetry max |K - K^T| / max|K| "
+          << error_bound(asym / K.linfty_norm()) << std::endl;
+
+  // an inverted element is reported, not assembled
+  Vector<double> u_bad(u);
+  const auto     cell = disc.dof_handler.begin_active();
+  std::vector<types::global_dof_index> dofs(disc.fe.n_dofs_per_cell());
+  cell->get_dof_indices(dofs);
+  for (unsigned int k = 0; k < dofs.size(); ++k)
+    if (disc.fe.system_to_component_index(k).first == 0)
+      u_bad[dofs[k]] = -3. * disc.support_points()[dofs[k]][0];
+  deallog << "inverted element: assemble() returns "
+          << assembler.assemble(u_bad, lambda, R, nullptr)
+          << ", energy() = " << assembler.energy(u_bad, lambda) << std::endl;
+}
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+  check(1);
+  check(2);
+}

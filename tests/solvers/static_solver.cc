@@ -1,0 +1,417 @@
+// The static solver on whole problems:
+//  1. patch test: a homogeneous deformation imposed on the boundary of a
+//     distorted mesh is reproduced inside to machine precision (P1, P2);
+//  2. cantilever under a small gravity load vs Euler-Bernoulli (P2; P1 for
+//     comparison);
+//  3. a 90 degree rigid rotation gives zero stress (and the linear model's
+//     spurious stress for comparison);
+//  4. the line search: a 60 degree twist in one increment needs halved
+//     steps and converges; without halvings it fails with a clear error;
+//  5. quadratic convergence near the solution (direct solver);
+//  6. every linear solver and the quasi-viscosity reach the same solution.
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/elasticity/elastic_assembler.h>
+#include <tissue_contact/materials/mooney_rivlin.h>
+#include <tissue_contact/simulation/static_simulation.h>
+
+#include "../tests.h"
+
+#include <sstream>
+
+using namespace dealii;
+using namespace TissueContact;
+using namespace TissueContactTests;
+
+namespace
+{
+  /** A problem with an arbitrary prescribed displacement on the whole
+   * boundary: shows the solver needs nothing but NonlinearProblem. */
+  class PatchProblem : public Solvers::NonlinearProblem
+  {
+  public:
+    PatchProblem(const Elasticity::Discretization &  disc,
+                 const Elasticity::ElasticAssembler &assembler,
+                 const Tensor<2, 3> &                H)
+      : disc(disc)
+      , assembler(assembler)
+      , H(H)
+      , X(disc.support_points())
+    {
+      std::vector<types::global_dof_index> face_dofs(disc.fe.n_dofs_per_face());
+      for (const auto &cell : disc.dof_handler.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              cell->face(f)->get_dof_indices(face_dofs);
+              for (unsigned int k = 0; k < face_dofs.size(); ++k)
+                boundary[face_dofs[k]] =
+                  disc.fe.face_system_to_component_index(k, f).first;
+            }
+    }
+    types::global_dof_index
+    n_dofs() const override
+    {
+      return disc.n_dofs();
+    }
+    const SparsityPattern &
+    sparsity_pattern() const override
+    {
+      return disc.sparsity_pattern;
+    }
+    bool
+    assemble(const Vector<double> &u,
+             const double          l,
+             Vector<double> &      R,
+             SparseMatrix<double> *K) override
+    {
+      return assembler.assemble(u, l, R, K);
+    }
+    std::map<types::global_dof_index, double>
+    prescribed_values(const double l) const override
+    {
+      std::map<types::global_dof_index, double> v;
+      for (const auto &b : boundary)
+        v[b.first] = l * (H * X[b.first])[b.second];
+      return v;
+    }
+    double
+    external_force_norm(const double) const override
+    {
+      return 0.;
+    }
+    Vector<double>
+    quasi_viscosity_diagonal(const double eta) const override
+    {
+      return assembler.quasi_viscosity_diagonal(eta);
+    }
+
+    double
+    max_error(const Vector<double> &u) const
+    {
+      double e = 0.;
+      for (const auto &cell : disc.dof_handler.active_cell_iterators())
+        {
+          std::vector<types::global_dof_index> dofs(disc.fe.n_dofs_per_cell());
+          cell->get_dof_indices(dofs);
+          for (unsigned int k = 0; k < dofs.size(); ++k)
+            e = std::max(e,
+                         std::abs(u[dofs[k]] -
+                                  (H * X[dofs[k]])[disc.fe
+                                                     .system_to_component_index(
+                                                       k)
+                                                     .first]));
+        }
+      return e;
+    }
+
+  private:
+    const Elasticity::Discretization &           disc;
+    const Elasticity::ElasticAssembler &         assembler;
+    const Tensor<2, 3>                           H;
+    const std::vector<Point<3>>                  X;
+    std::map<types::global_dof_index, unsigned> boundary;
+  };
+
+  void
+  patch_test(const unsigned int degree)
+  {
+    Triangulation<3> tria;
+    GridGenerator::subdivided_hyper_rectangle_with_simplices(
+      tria, {3, 3, 3}, Point<3>(0, 0, 0), Point<3>(1, 1, 1));
+    GridTools::distort_random(0.25, tria, true, 3);
+    const Materials::MooneyRivlin      material(5., 1., 50.);
+    const Elasticity::Discretization   disc(tria, degree);
+    const Elasticity::ElasticAssembler assembler(disc,
+                                                 {{0, {&material, 1.}}},
+                                                 Elasticity::DeadLoads());
+    const Tensor<2, 3> H({{0.15, 0.1, 0.}, {-0.05, -0.1, 0.08}, {0., 0.05, 0.2}});
+    PatchProblem       problem(disc, assembler, H);
+    Solvers::IncrementalNewtonSolver::Parameters p;
+    p.initial_increment = 1.;
+    Solvers::IncrementalNewtonSolver solver(p);
+    Vector<double>                   u(disc.n_dofs());
+    const auto                       stats = solver.solve(problem, u);
+    deallog << "patch test P" << degree << " (" << disc.n_dofs()
+            << " unknowns, " << stats.newton_iterations
+            << " Newton iterations): max |u - H X| "
+            << error_bound(problem.max_error(u), -14) << std::endl;
+  }
+
+  // A scene as prm text: a beam or cube, with placeholders filled in.
+  std::string
+  scene(const std::string &body, const std::string &rest)
+  {
+    return "subsection Output\n set Write VTU = false\n"
+           " set Directory = .\nend\n"
+           "subsection Bodies\n subsection Body 0\n" +
+           body + " end\nend\n" + rest;
+  }
+
+  std::unique_ptr<StaticSimulation>
+  solve(const std::string &text, std::ostream &log)
+  {
+    auto sim = std::make_unique<StaticSimulation>(
+      Scene::SceneParameters::from_string(text), log);
+    sim->run();
+    return sim;
+  }
+
+  // Average of a displacement component over the DoFs of a boundary id.
+  double
+  boundary_average(const StaticSimulation &sim,
+                   const types::boundary_id id,
+                   const unsigned int       component)
+  {
+    const auto &disc = sim.discretization();
+    std::map<types::global_dof_index, double> values;
+    std::vector<types::global_dof_index> face_dofs(disc.fe.n_dofs_per_face());
+    for (const auto &cell : disc.dof_handler.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            cell->face(f)->boundary_id() == id)
+          {
+            cell->face(f)->get_dof_indices(face_dofs);
+            for (unsigned int k = 0; k < face_dofs.size(); ++k)
+              if (disc.fe.face_system_to_component_index(k, f).first ==
+                  component)
+                values[face_dofs[k]] = sim.solution()[face_dofs[k]];
+          }
+    double sum = 0.;
+    for (const auto &v : values)
+      sum += v.second;
+    return sum / values.size();
+  }
+
+  void
+  cantilever(const unsigned int degree, const unsigned int n_length)
+  {
+    // E = 1000, nu = 0 (mu = 500, lambda = 0), L = 1, b = h = 0.1,
+    // q = rho g A = 0.01 * 0.01: w = q L^4 / (8 E I), I = b h^3 / 12
+    const double E = 1000., g = 0.01, b = 0.1, h = 0.1, L = 1.;
+    const double w_eb = g * b * h * std::pow(L, 4) / (8. * E * b * h * h * h / 12.);
+    std::ostringstream log;
+    const auto         sim = solve(
+      scene("set Model = neo-Hookean\n set Mu = 500\n set Lambda = 0\n",
+            "subsection Mesh\n set Box upper corner = 1, 0.1, 0.1\n"
+            " set Box subdivisions = " +
+              std::to_string(n_length) +
+              ", 2, 2\nend\n"
+              "subsection Discretization\n set Polynomial degree = " +
+              std::to_string(degree) +
+              "\nend\n"
+              "subsection Loads\n set Gravity = 0, 0, -0.01\nend\n"
+              "subsection Load stepping\n set Initial increment = 1\nend\n"),
+      log);
+    const double w = -boundary_average(*sim, 1, 2);
+    deallog << "cantilever P" << degree << " " << n_length
+            << "x2x2: tip deflection / Euler-Bernoulli = " << std::fixed
+            << std::setprecision(3) << w / w_eb << std::defaultfloat
+            << std::setprecision(6) << " (shear deformation adds 0.8 %)"
+            << std::endl;
+  }
+
+  void
+  rigid_rotation(const std::string &model)
+  {
+    std::string bcs = "subsection Boundary conditions\n"
+                      " set Number of Dirichlet conditions = 6\n";
+    for (unsigned int i = 0; i < 6; ++i)
+      bcs += " subsection Dirichlet " + std::to_string(i) +
+             "\n  set Boundary id = " + std::to_string(i) +
+             "\n  set Rotation axis = 1, 1, 0\n  set Rotation angle = 90\n"
+             "  set Rotation center = 0.5, 0.5, 0.5\n end\n";
+    std::ostringstream log;
+    const auto         sim =
+      solve(scene("set Model = " + model + "\n set Mu = 3\n set Lambda = 5\n",
+                  "subsection Mesh\n set Box subdivisions = 2, 2, 2\n"
+                  " set Distortion = 0.2\nend\n" +
+                    bcs + "end\n"),
+            log);
+    const auto q = sim->elastic_assembler().cell_quantities(sim->solution());
+    deallog << "90 degree rigid rotation, " << model
+            << ": max von Mises / mu "
+            << error_bound(q.von_mises.linfty_norm() / 3., -10)
+            << ", max |J - 1| "
+            << error_bound([&] {
+                 double e = 0.;
+                 for (const double J : q.J)
+                   e = std::max(e, std::abs(J - 1.));
+                 return e;
+               }(),
+                           -10)
+            << std::endl;
+  }
+
+  // A 60 degree twist of a Mooney-Rivlin beam in one increment.
+  std::string
+  twist(const std::string &extra)
+  {
+    return scene(
+      "set Model = Mooney-Rivlin\n set C1 = 5\n set C2 = 1\n set a = 50\n",
+      "subsection Mesh\n set Box upper corner = 1, 0.2, 0.2\n"
+      " set Box subdivisions = 6, 2, 2\nend\n"
+      "subsection Boundary conditions\n"
+      " set Number of Dirichlet conditions = 2\n"
+      " subsection Dirichlet 0\n  set Boundary id = 0\n end\n"
+      " subsection Dirichlet 1\n  set Boundary id = 1\n"
+      "  set Rotation axis = 1, 0, 0\n  set Rotation center = 0, 0.1, 0.1\n"
+      "  set Rotation angle = 60\n end\nend\n" +
+        extra);
+  }
+
+  // Newton rows of the screen log: the step lengths of the iterations.
+  std::vector<std::pair<double, double>> // (residual, step)
+  rows(const std::string &log)
+  {
+    std::vector<std::pair<double, double>> r;
+    std::istringstream                     in(log);
+    std::string                            line;
+    while (std::getline(in, line))
+      {
+        std::istringstream l(line);
+        unsigned int       it;
+        double             res;
+        if (line.size() > 2 && line[0] == ' ' && (l >> it >> res))
+          {
+            double du, s;
+            if (l >> du >> s)
+              r.emplace_back(res, s);
+            else
+              r.emplace_back(res, 0.);
+          }
+      }
+    return r;
+  }
+
+  void
+  line_search()
+  {
+    std::ostringstream log;
+    const std::string  one_step =
+      "subsection Load stepping\n set Initial increment = 1\n"
+      " set Minimum increment = 1\nend\n";
+    solve(twist(one_step), log);
+    unsigned int halved = 0;
+    std::string  steps;
+    for (const auto &r : rows(log.str()))
+      {
+        if (r.second > 0. && r.second < 1.)
+          ++halved;
+        if (r.second > 0.)
+          steps += " " + std::to_string(r.second).substr(0, 6);
+      }
+    deallog << "60 degree twist in one increment: converged, "
+            << "step lengths" << steps << std::endl;
+    deallog << "iterations with a halved step: " << halved << std::endl;
+
+    try
+      {
+        std::ostringstream log2;
+        solve(twist(one_step + "subsection Newton\n"
+                               " set Maximum line search halvings = 0\nend\n"),
+              log2);
+        deallog << "without halvings: converged (unexpected)" << std::endl;
+      }
+    catch (const std::exception &e)
+      {
+        deallog << "without halvings: error: " << error_message(e)
+                << std::endl;
+      }
+  }
+
+  void
+  quadratic_convergence()
+  {
+    std::ostringstream log;
+    solve(twist("subsection Load stepping\n set Initial increment = 0.25\n"
+                " set Maximum increment = 0.25\nend\n"),
+          log);
+    // the last increment: p_k = log(r_k+1 / r_k) / log(r_k / r_k-1)
+    const auto        all = rows(log.str());
+    std::vector<double> r;
+    for (auto it = all.rbegin(); it != all.rend(); ++it)
+      {
+        r.insert(r.begin(), it->first);
+        if (it != all.rbegin() && it->second == 0.)
+          {
+            r.erase(r.begin());
+            break;
+          }
+      }
+    deallog << "last increment, residuals:";
+    for (const double v : r)
+      deallog << " " << std::setprecision(1) << std::scientific << v;
+    deallog << std::defaultfloat << std::setprecision(6) << std::endl;
+    deallog << "convergence order estimates:";
+    for (unsigned int k = 1; k + 1 < r.size(); ++k)
+      if (r[k + 1] > 1e-12 * r[0])
+        deallog << " " << std::fixed << std::setprecision(1)
+                << std::log(r[k + 1] / r[k]) / std::log(r[k] / r[k - 1]);
+    deallog << std::defaultfloat << std::setprecision(6) << std::endl;
+    deallog << "r_k+1 / r_k^2 (bounded for quadratic convergence):";
+    for (unsigned int k = 0; k + 1 < r.size(); ++k)
+      if (r[k + 1] > 1e-12 * r[0])
+        deallog << " " << std::setprecision(1) << std::scientific
+                << r[k + 1] / (r[k] * r[k]);
+    deallog << std::defaultfloat << std::setprecision(6) << std::endl;
+  }
+
+  void
+  solvers_agree()
+  {
+    std::ostringstream log;
+    const std::string  stepping =
+      "subsection Load stepping\n set Initial increment = 0.5\nend\n";
+    const auto reference = solve(twist(stepping), log);
+    const auto compare   = [&](const std::string &name,
+                             const std::string &extra) {
+      std::ostringstream log;
+      const auto         sim = solve(twist(stepping + extra), log);
+      Vector<double>     d(sim->solution());
+      d -= reference->solution();
+      unsigned int its = 0;
+      for (const auto &r : rows(log.str()))
+        its += (r.second > 0.);
+      deallog << name << ": |u - u_direct| / |u_direct| "
+              << error_bound(d.l2_norm() / reference->solution().l2_norm(),
+                             -10)
+              << std::endl;
+      return its;
+    };
+    const unsigned int jacobi = compare(
+      "GMRES+Jacobi (rel. tol. 0.1)",
+      "subsection Linear solver\n set Type = GMRES+Jacobi\nend\n");
+    const unsigned int amg =
+      compare("GMRES+AMG (rel. tol. 0.1)",
+              "subsection Linear solver\n set Type = GMRES+AMG\nend\n");
+    const unsigned int viscous = compare(
+      "direct with quasi-viscosity",
+      "subsection Newton\n set Quasi-viscosity = true\nend\n");
+    unsigned int direct = 0;
+    for (const auto &r : rows(log.str()))
+      direct += (r.second > 0.);
+    deallog << "Newton iterations: direct " << direct << ", GMRES+Jacobi "
+            << jacobi << ", GMRES+AMG " << amg << ", direct + quasi-viscosity "
+            << viscous << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+  patch_test(1);
+  patch_test(2);
+  cantilever(2, 16);
+  cantilever(1, 16);
+  rigid_rotation("neo-Hookean");
+  rigid_rotation("linear");
+  line_search();
+  quadratic_convergence();
+  solvers_agree();
+}
