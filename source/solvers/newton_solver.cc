@@ -355,8 +355,11 @@ namespace TissueContact
                   << " (last converged: " << lambda << "): " << failure
                   << "; the load increment fell below the minimum "
                   << parameters.minimum_increment
-                  << ". Try smaller increments, Quasi-viscosity = true, or "
-                     "check the loads and boundary conditions";
+                  << ". Check the loads and boundary conditions, or try a "
+                     "smaller Minimum increment"
+                  << (parameters.quasi_viscosity ?
+                        " or a smaller Viscosity factor" :
+                        " or Quasi-viscosity = true");
               AssertThrow(increment_size >= parameters.minimum_increment,
                           ExcMessage(msg.str()));
             }
