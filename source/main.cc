@@ -6,11 +6,9 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
-
+#include <iostream>
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/simulation/static_simulation.h>
-
-#include <iostream>
 
 namespace
 {

@@ -1,8 +1,6 @@
 #include <deal.II/base/exceptions.h>
-
-#include <tissue_contact/base/exceptions.h>
-
 #include <sstream>
+#include <tissue_contact/base/exceptions.h>
 
 namespace TissueContact
 {

@@ -1,6 +1,5 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-
 #include <tissue_contact/elasticity/discretization.h>
 
 namespace TissueContact

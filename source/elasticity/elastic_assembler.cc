@@ -1,10 +1,8 @@
 #include <deal.II/base/work_stream.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
-
-#include <tissue_contact/elasticity/elastic_assembler.h>
-
 #include <limits>
+#include <tissue_contact/elasticity/elastic_assembler.h>
 
 namespace TissueContact
 {
@@ -30,7 +28,8 @@ namespace TissueContact
                       other.fe_values.get_update_flags())
           , grad_u(other.grad_u)
           , component(other.component)
-        {}
+        {
+        }
 
         FEValues<3>               fe_values;
         std::vector<Tensor<2, 3>> grad_u;
@@ -52,23 +51,23 @@ namespace TissueContact
 
 
     ElasticAssembler::ElasticAssembler(
-      const Discretization &                        disc,
+      const Discretization                         &disc,
       const std::map<types::material_id, BodyData> &bodies,
-      const DeadLoads &                             loads)
+      const DeadLoads                              &loads)
       : disc(disc)
       , bodies(bodies)
       , f_ext(disc.n_dofs())
     {
       // f_ext = int rho0 g N dV + int t0 N dA (dead loads, computed once)
-      FEValues<3>     fe_values(disc.mapping,
+      FEValues<3>                          fe_values(disc.mapping,
                             disc.fe,
                             disc.quadrature,
                             update_values | update_JxW_values);
-      FEFaceValues<3> fe_face_values(disc.mapping,
+      FEFaceValues<3>                      fe_face_values(disc.mapping,
                                      disc.fe,
                                      disc.face_quadrature,
                                      update_values | update_JxW_values);
-      const unsigned int n = disc.fe.n_dofs_per_cell();
+      const unsigned int                   n = disc.fe.n_dofs_per_cell();
       std::vector<types::global_dof_index> dofs(n);
       Vector<double>                       local(n);
       for (const auto &cell : disc.dof_handler.active_cell_iterators())
@@ -86,14 +85,14 @@ namespace TissueContact
                     const unsigned int c =
                       disc.fe.system_to_component_index(k).first;
                     local[k] += b->density * loads.gravity[c] *
-                                fe_values.shape_value(k, q) *
-                                fe_values.JxW(q);
+                                fe_values.shape_value(k, q) * fe_values.JxW(q);
                   }
             }
           for (const unsigned int f : cell->face_indices())
             if (cell->face(f)->at_boundary())
               {
-                const auto t = loads.tractions.find(cell->face(f)->boundary_id());
+                const auto t =
+                  loads.tractions.find(cell->face(f)->boundary_id());
                 if (t == loads.tractions.end())
                   continue;
                 fe_face_values.reinit(cell, f);
@@ -126,7 +125,7 @@ namespace TissueContact
     bool
     ElasticAssembler::assemble(const Vector<double> &u,
                                const double          load_factor,
-                               Vector<double> &      R,
+                               Vector<double>       &R,
                                SparseMatrix<double> *K) const
     {
       R.reinit(disc.n_dofs());
@@ -153,15 +152,14 @@ namespace TissueContact
         std::vector<Tensor<2, 3>>   B(n); // B_k = dN_k,J A_{c_k J . .}
         for (unsigned int q = 0; q < disc.quadrature.size(); ++q)
           {
-            const Tensor<2, 3> F =
-              unit_symmetric_tensor<3>() + s.grad_u[q];
+            const Tensor<2, 3> F = unit_symmetric_tensor<3>() + s.grad_u[q];
             if (!(determinant(F) > 0.))
               {
                 c.valid = false;
                 return;
               }
-            const double   JxW = s.fe_values.JxW(q);
-            const Point<3> &X  = s.fe_values.quadrature_point(q);
+            const double    JxW = s.fe_values.JxW(q);
+            const Point<3> &X   = s.fe_values.quadrature_point(q);
             if (K == nullptr)
               m.P = b->material->first_piola_kirchhoff(F, X);
             else
@@ -183,8 +181,7 @@ namespace TissueContact
               for (unsigned int k = 0; k < n; ++k)
                 for (unsigned int l = k; l < n; ++l)
                   c.K(k, l) +=
-                    (B[k][s.component[l]] * s.fe_values.shape_grad(l, q)) *
-                    JxW;
+                    (B[k][s.component[l]] * s.fe_values.shape_grad(l, q)) * JxW;
           }
         if (K != nullptr)
           for (unsigned int k = 0; k < n; ++k)
@@ -226,7 +223,7 @@ namespace TissueContact
       ScratchData s(disc,
                     update_gradients | update_JxW_values |
                       update_quadrature_points);
-      double W = 0.;
+      double      W = 0.;
       for (const auto &cell : disc.dof_handler.active_cell_iterators())
         {
           const BodyData *b = body(cell->material_id());
@@ -269,12 +266,12 @@ namespace TissueContact
     Vector<double>
     ElasticAssembler::quasi_viscosity_diagonal(const double eta) const
     {
-      Vector<double> D(disc.n_dofs());
-      FEValues<3>    fe_values(disc.mapping,
+      Vector<double>                       D(disc.n_dofs());
+      FEValues<3>                          fe_values(disc.mapping,
                             disc.fe,
                             disc.quadrature,
                             update_JxW_values);
-      const unsigned int n = disc.fe.n_dofs_per_cell();
+      const unsigned int                   n = disc.fe.n_dofs_per_cell();
       std::vector<types::global_dof_index> dofs(n);
       for (const auto &cell : disc.dof_handler.active_cell_iterators())
         {
@@ -299,15 +296,16 @@ namespace TissueContact
     CellQuantities
     ElasticAssembler::cell_quantities(const Vector<double> &u) const
     {
-      const unsigned int n_cells = disc.dof_handler.get_triangulation().n_active_cells();
-      CellQuantities     out;
+      const unsigned int n_cells =
+        disc.dof_handler.get_triangulation().n_active_cells();
+      CellQuantities out;
       out.J.reinit(n_cells);
       out.strain_energy_density.reinit(n_cells);
       out.von_mises.reinit(n_cells);
       for (auto &v : out.cauchy_stress)
         v.reinit(n_cells);
 
-      ScratchData s(disc,
+      ScratchData        s(disc,
                     update_gradients | update_JxW_values |
                       update_quadrature_points);
       const unsigned int voigt[6][2] = {
@@ -315,7 +313,7 @@ namespace TissueContact
       for (const auto &cell : disc.dof_handler.active_cell_iterators())
         {
           const unsigned int i = cell->active_cell_index();
-          const BodyData *   b = body(cell->material_id());
+          const BodyData    *b = body(cell->material_id());
           s.fe_values.reinit(cell);
           s.fe_values[displacement].get_function_gradients(u, s.grad_u);
           double       volume = 0., J = 0., psi = 0.;

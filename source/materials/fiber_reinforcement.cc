@@ -1,8 +1,6 @@
-#include <deal.II/base/exceptions.h>
-
-#include <tissue_contact/materials/fiber_reinforcement.h>
-
 #include <cmath>
+#include <deal.II/base/exceptions.h>
+#include <tissue_contact/materials/fiber_reinforcement.h>
 
 namespace TissueContact
 {
@@ -54,7 +52,7 @@ namespace TissueContact
 
     double
     FiberReinforcement::energy_C(const SymmetricTensor<2, 3> &C,
-                                 const Point<3> &             X) const
+                                 const Point<3>              &X) const
     {
       const Tensor<1, 3> f   = fiber_direction(X);
       const double       lf2 = f * (C * f);
@@ -66,9 +64,9 @@ namespace TissueContact
 
     void
     FiberReinforcement::stress_C(const SymmetricTensor<2, 3> &C,
-                                 const Point<3> &             X,
-                                 SymmetricTensor<2, 3> &      S,
-                                 SymmetricTensor<4, 3> *      CC) const
+                                 const Point<3>              &X,
+                                 SymmetricTensor<2, 3>       &S,
+                                 SymmetricTensor<4, 3>       *CC) const
     {
       ground->stress_C(C, X, S, CC);
       const Tensor<1, 3>          f   = fiber_direction(X);

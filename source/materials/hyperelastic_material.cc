@@ -15,8 +15,7 @@ namespace TissueContact
 
 
     double
-    HyperelasticMaterial::energy(const Tensor<2, 3> &F,
-                                 const Point<3> &    X) const
+    HyperelasticMaterial::energy(const Tensor<2, 3> &F, const Point<3> &X) const
     {
       return energy_C(right_cauchy_green(F), X);
     }
@@ -24,7 +23,7 @@ namespace TissueContact
 
     Tensor<2, 3>
     HyperelasticMaterial::first_piola_kirchhoff(const Tensor<2, 3> &F,
-                                                const Point<3> &    X) const
+                                                const Point<3>     &X) const
     {
       SymmetricTensor<2, 3> S;
       stress_C(right_cauchy_green(F), X, S, nullptr);
@@ -34,8 +33,8 @@ namespace TissueContact
 
     void
     HyperelasticMaterial::evaluate(const Tensor<2, 3> &F,
-                                   const Point<3> &    X,
-                                   MaterialResponse &  response) const
+                                   const Point<3>     &X,
+                                   MaterialResponse   &response) const
     {
       const SymmetricTensor<2, 3> C = right_cauchy_green(F);
       SymmetricTensor<2, 3>       S;

@@ -26,9 +26,9 @@ namespace TissueContact
                                 SymmetricTensor<2, 3> &S,
                                 SymmetricTensor<4, 3> *CC) const
     {
-      const Invariants            I  = invariants(C);
-      const InvariantDerivatives  D  = psi_derivatives(I);
-      const SymmetricTensor<2, 3> Id = unit_symmetric_tensor<3>();
+      const Invariants            I     = invariants(C);
+      const InvariantDerivatives  D     = psi_derivatives(I);
+      const SymmetricTensor<2, 3> Id    = unit_symmetric_tensor<3>();
       const SymmetricTensor<2, 3> C_inv = invert(C);
 
       // G_i = dI_i/dC
@@ -58,10 +58,9 @@ namespace TissueContact
             for (unsigned int B = A; B < 3; ++B)
               for (unsigned int K = 0; K < 3; ++K)
                 for (unsigned int L = K; L < 3; ++L)
-                  T[A][B][K][L] +=
-                    c * (C_inv[A][B] * C_inv[K][L] -
-                         0.5 * (C_inv[A][K] * C_inv[B][L] +
-                                C_inv[A][L] * C_inv[B][K]));
+                  T[A][B][K][L] += c * (C_inv[A][B] * C_inv[K][L] -
+                                        0.5 * (C_inv[A][K] * C_inv[B][L] +
+                                               C_inv[A][L] * C_inv[B][K]));
         }
       T *= 4.;
     }

@@ -42,8 +42,8 @@ namespace TissueContact
 
     void
     LinearElastic::evaluate(const Tensor<2, 3> &F,
-                            const Point<3> &    X,
-                            MaterialResponse &  response) const
+                            const Point<3>     &X,
+                            MaterialResponse   &response) const
     {
       response.psi = energy(F, X);
       response.P   = first_piola_kirchhoff(F, X);

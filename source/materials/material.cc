@@ -1,5 +1,4 @@
 #include <deal.II/base/exceptions.h>
-
 #include <tissue_contact/materials/material.h>
 
 namespace TissueContact
@@ -10,8 +9,8 @@ namespace TissueContact
     push_forward_tangent(const Tensor<2, 3> &F,
                          const Tensor<2, 3> &S,
                          const Tensor<4, 3> &CC,
-                         Tensor<2, 3> &      P,
-                         Tensor<4, 3> &      A)
+                         Tensor<2, 3>       &P,
+                         Tensor<4, 3>       &A)
     {
       P = F * S;
       // T_iJLN = F_iI CC_IJLN
@@ -30,8 +29,7 @@ namespace TissueContact
             for (unsigned int L = 0; L < 3; ++L)
               A[i][J][k][L] = (i == k ? S[J][L] : 0.) +
                               T[i][J][L][0] * F[k][0] +
-                              T[i][J][L][1] * F[k][1] +
-                              T[i][J][L][2] * F[k][2];
+                              T[i][J][L][1] * F[k][1] + T[i][J][L][2] * F[k][2];
     }
 
 

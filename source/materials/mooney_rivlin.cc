@@ -1,8 +1,6 @@
-#include <deal.II/base/exceptions.h>
-
-#include <tissue_contact/materials/mooney_rivlin.h>
-
 #include <cmath>
+#include <deal.II/base/exceptions.h>
+#include <tissue_contact/materials/mooney_rivlin.h>
 
 namespace TissueContact
 {

@@ -1,6 +1,5 @@
-#include <tissue_contact/materials/neo_hookean.h>
-
 #include <cmath>
+#include <tissue_contact/materials/neo_hookean.h>
 
 namespace TissueContact
 {

@@ -1,8 +1,6 @@
-#include <deal.II/base/exceptions.h>
-
-#include <tissue_contact/materials/veronda.h>
-
 #include <cmath>
+#include <deal.II/base/exceptions.h>
+#include <tissue_contact/materials/veronda.h>
 
 namespace TissueContact
 {

@@ -1,14 +1,12 @@
 #include <deal.II/base/exceptions.h>
-
-#include <tissue_contact/output/convergence_log.h>
-
 #include <iomanip>
+#include <tissue_contact/output/convergence_log.h>
 
 namespace TissueContact
 {
   namespace Output
   {
-    ConvergenceLog::ConvergenceLog(std::ostream &     screen,
+    ConvergenceLog::ConvergenceLog(std::ostream      &screen,
                                    const std::string &csv_file)
       : screen(screen)
       , csv(csv_file)
@@ -27,14 +25,13 @@ namespace TissueContact
     {
       if (i.increment != last_increment || i.iteration == 0)
         {
-          screen << "Increment " << i.increment
-                 << ", load factor " << std::setprecision(6)
-                 << i.load_factor << "\n"
+          screen << "Increment " << i.increment << ", load factor "
+                 << std::setprecision(6) << i.load_factor << "\n"
                  << "  iter   |R|          |du|         step   lin.its\n";
           last_increment = i.increment;
         }
-      screen << "  " << std::setw(4) << i.iteration << "   "
-             << std::scientific << std::setprecision(3) << i.residual_norm;
+      screen << "  " << std::setw(4) << i.iteration << "   " << std::scientific
+             << std::setprecision(3) << i.residual_norm;
       if (i.step_length > 0.)
         screen << "    " << i.update_norm << "    " << std::defaultfloat
                << std::setw(6) << std::left << i.step_length << std::right
@@ -43,11 +40,10 @@ namespace TissueContact
         screen << std::defaultfloat << "    converged";
       screen << std::defaultfloat << "\n";
 
-      csv << i.increment << "," << std::setprecision(10) << i.load_factor
-          << "," << i.iteration << "," << std::scientific
-          << std::setprecision(8) << i.residual_norm << "," << i.update_norm
-          << "," << std::defaultfloat << i.step_length << ","
-          << i.linear_iterations << "\n"
+      csv << i.increment << "," << std::setprecision(10) << i.load_factor << ","
+          << i.iteration << "," << std::scientific << std::setprecision(8)
+          << i.residual_norm << "," << i.update_norm << "," << std::defaultfloat
+          << i.step_length << "," << i.linear_iterations << "\n"
           << std::flush;
     }
 

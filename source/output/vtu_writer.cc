@@ -1,11 +1,9 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/numerics/data_out.h>
-
-#include <tissue_contact/output/vtu_writer.h>
-
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <tissue_contact/output/vtu_writer.h>
 
 namespace TissueContact
 {
@@ -15,7 +13,8 @@ namespace TissueContact
                                      const std::string &base_name)
       : directory(directory)
       , base_name(base_name)
-    {}
+    {
+    }
 
 
     std::string
@@ -26,22 +25,23 @@ namespace TissueContact
 
 
     std::string
-    VtuSeriesWriter::write(const Elasticity::Discretization &  disc,
+    VtuSeriesWriter::write(const Elasticity::Discretization   &disc,
                            const Elasticity::ElasticAssembler &assembler,
-                           const Vector<double> &              u,
+                           const Vector<double>               &u,
                            const double                        time)
     {
       const Elasticity::CellQuantities q = assembler.cell_quantities(u);
-      Vector<double> material_id(q.J.size());
+      Vector<double>                   material_id(q.J.size());
       for (const auto &cell : disc.dof_handler.active_cell_iterators())
         material_id[cell->active_cell_index()] = cell->material_id();
 
       DataOut<3> data_out;
       data_out.attach_dof_handler(disc.dof_handler);
       const std::vector<std::string> names(3, "displacement");
-      const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-        interpretation(3,
-                       DataComponentInterpretation::component_is_part_of_vector);
+      const std::vector<
+        DataComponentInterpretation::DataComponentInterpretation>
+        interpretation(
+          3, DataComponentInterpretation::component_is_part_of_vector);
       data_out.add_data_vector(u,
                                names,
                                DataOut<3>::type_dof_data,

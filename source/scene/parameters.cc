@@ -1,9 +1,7 @@
 #include <deal.II/base/utilities.h>
-
-#include <tissue_contact/scene/parameters.h>
-
 #include <fstream>
 #include <sstream>
+#include <tissue_contact/scene/parameters.h>
 
 namespace TissueContact
 {
@@ -27,8 +25,8 @@ namespace TissueContact
         prm.declare_entry("Translation",
                           "0, 0, 0",
                           Patterns::List(Patterns::Double(), 3, 3),
-                          "Translation d of the " + what +
-                            " at load factor 1" + vector_pattern_doc);
+                          "Translation d of the " + what + " at load factor 1" +
+                            vector_pattern_doc);
         prm.declare_entry("Rotation axis",
                           "0, 0, 1",
                           Patterns::List(Patterns::Double(), 3, 3),
@@ -178,10 +176,10 @@ namespace TissueContact
                       ExcMessage("Mesh: Source = file needs a File"));
           file = resolve(file, dir);
         }
-      lower        = Point<3>(parse_vector(prm.get("Box lower corner"),
-                                    "Box lower corner"));
-      upper        = Point<3>(parse_vector(prm.get("Box upper corner"),
-                                    "Box upper corner"));
+      lower =
+        Point<3>(parse_vector(prm.get("Box lower corner"), "Box lower corner"));
+      upper =
+        Point<3>(parse_vector(prm.get("Box upper corner"), "Box upper corner"));
       const auto s = Utilities::string_to_int(
         Utilities::split_string_list(prm.get("Box subdivisions"), ','));
       subdivisions.assign(s.begin(), s.end());
@@ -363,7 +361,7 @@ namespace TissueContact
 
 
     void
-    SceneParameters::declare(ParameterHandler &prm,
+    SceneParameters::declare(ParameterHandler  &prm,
                              const unsigned int n_bodies,
                              const unsigned int n_dirichlet,
                              const unsigned int n_tractions)
@@ -485,7 +483,7 @@ namespace TissueContact
                              "'"));
       std::stringstream text;
       text << in.rdbuf();
-      const auto slash = filename.rfind('/');
+      const auto        slash = filename.rfind('/');
       const std::string directory =
         slash == std::string::npos ? "" : filename.substr(0, slash);
       return parse_text(text.str(), filename, directory);

@@ -1,5 +1,4 @@
 #include <deal.II/physics/transformations.h>
-
 #include <tissue_contact/scene/prescribed_motion.h>
 
 namespace TissueContact

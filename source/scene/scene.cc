@@ -2,7 +2,9 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
-
+#include <fstream>
+#include <set>
+#include <sstream>
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/materials/fiber_reinforcement.h>
 #include <tissue_contact/materials/linear_elastic.h>
@@ -12,10 +14,6 @@
 #include <tissue_contact/materials/veronda.h>
 #include <tissue_contact/scene/scene.h>
 
-#include <fstream>
-#include <set>
-#include <sstream>
-
 namespace TissueContact
 {
   namespace Scene
@@ -24,8 +22,8 @@ namespace TissueContact
     create_material(const BodyParameters &b)
     {
       using namespace Materials;
-      const std::string where = "body '" + b.name + "' (material id " +
-                                std::to_string(b.id) + "): ";
+      const std::string where =
+        "body '" + b.name + "' (material id " + std::to_string(b.id) + "): ";
       try
         {
           if (b.model == "rigid")
@@ -135,9 +133,9 @@ namespace TissueContact
           catch (const std::exception &e)
             {
               AssertThrow(false,
-                          ExcMessage("cannot read mesh file '" + m.file +
-                                     "' as a gmsh .msh file: " +
-                                     error_message(e)));
+                          ExcMessage(
+                            "cannot read mesh file '" + m.file +
+                            "' as a gmsh .msh file: " + error_message(e)));
             }
         }
       if (m.scale != 1.)
@@ -171,11 +169,11 @@ namespace TissueContact
                                  " but no body in the parameter file uses it; "
                                  "add a 'Body' subsection with this Material "
                                  "id"));
-          const Tensor<1, 3> e1 = cell->vertex(1) - cell->vertex(0);
-          const Tensor<1, 3> e2 = cell->vertex(2) - cell->vertex(0);
-          const Tensor<1, 3> e3 = cell->vertex(3) - cell->vertex(0);
-          const double volume   = (e1 * cross_product_3d(e2, e3)) / 6.;
-          double       h        = 0.;
+          const Tensor<1, 3> e1     = cell->vertex(1) - cell->vertex(0);
+          const Tensor<1, 3> e2     = cell->vertex(2) - cell->vertex(0);
+          const Tensor<1, 3> e3     = cell->vertex(3) - cell->vertex(0);
+          const double       volume = (e1 * cross_product_3d(e2, e3)) / 6.;
+          double             h      = 0.;
           for (unsigned int l = 0; l < cell->n_lines(); ++l)
             h = std::max(h, cell->line(l)->diameter());
           std::ostringstream where;
@@ -183,10 +181,10 @@ namespace TissueContact
                 << int(cell->material_id()) << ", first vertex "
                 << cell->vertex(0) << ")";
           AssertThrow(volume > 0. || std::abs(volume) <= 1e-10 * h * h * h,
-                      ExcMessage("the mesh has an inverted tetrahedron: " +
-                                 where.str() +
-                                 " has negative volume; fix the element's "
-                                 "node order in the mesh"));
+                      ExcMessage(
+                        "the mesh has an inverted tetrahedron: " + where.str() +
+                        " has negative volume; fix the element's "
+                        "node order in the mesh"));
           AssertThrow(volume > 1e-10 * h * h * h,
                       ExcMessage("the mesh has a degenerate (flat) "
                                  "tetrahedron: " +
@@ -201,7 +199,7 @@ namespace TissueContact
                                std::to_string(b.id) +
                                ", which no cell of the mesh has"));
       const auto check_boundary = [&](const types::boundary_id id,
-                                      const std::string &      what) {
+                                      const std::string       &what) {
         std::ostringstream present;
         for (const auto i : boundary_ids)
           present << " " << int(i);
@@ -245,9 +243,9 @@ namespace TissueContact
     std::vector<PrescribedDof>
     Scene::prescribed_dofs(const Elasticity::Discretization &disc) const
     {
-      const std::vector<Point<3>> X = disc.support_points();
-      const auto &                fe = disc.fe;
-      std::vector<PrescribedDof>  result;
+      const std::vector<Point<3>>          X  = disc.support_points();
+      const auto                          &fe = disc.fe;
+      std::vector<PrescribedDof>           result;
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
 

@@ -1,30 +1,28 @@
 #include <deal.II/dofs/dof_tools.h>
-
+#include <filesystem>
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/output/convergence_log.h>
 #include <tissue_contact/output/vtu_writer.h>
 #include <tissue_contact/simulation/static_simulation.h>
 
-#include <filesystem>
-
 namespace TissueContact
 {
-  StaticSimulation::StaticSimulation(
-    const Scene::SceneParameters &parameters,
-    std::ostream &                out)
+  StaticSimulation::StaticSimulation(const Scene::SceneParameters &parameters,
+                                     std::ostream                 &out)
     : scene(parameters)
     , disc(scene.triangulation, parameters.degree)
     , assembler(disc, scene.body_data(), scene.dead_loads())
     , prescribed(scene.prescribed_dofs(disc))
     , u(disc.n_dofs())
     , out(out)
-  {}
+  {
+  }
 
 
   bool
   StaticSimulation::assemble(const Vector<double> &u,
                              const double          load_factor,
-                             Vector<double> &      R,
+                             Vector<double>       &R,
                              SparseMatrix<double> *K)
   {
     return assembler.assemble(u, load_factor, R, K);
@@ -36,8 +34,7 @@ namespace TissueContact
   {
     std::map<types::global_dof_index, double> values;
     for (const auto &p : prescribed)
-      values[p.dof] =
-        p.motion->displacement(p.X, load_factor)[p.component];
+      values[p.dof] = p.motion->displacement(p.X, load_factor)[p.component];
     return values;
   }
 
@@ -86,10 +83,10 @@ namespace TissueContact
                       TimerOutput::wall_times);
 
     out << "TissueContact static analysis\n"
-        << "  mesh: " << scene.triangulation.n_active_cells()
-        << " tetrahedra, " << scene.triangulation.n_vertices()
-        << " vertices; P" << p.degree << " elements, " << disc.n_dofs()
-        << " unknowns, " << prescribed.size() << " prescribed\n";
+        << "  mesh: " << scene.triangulation.n_active_cells() << " tetrahedra, "
+        << scene.triangulation.n_vertices() << " vertices; P" << p.degree
+        << " elements, " << disc.n_dofs() << " unknowns, " << prescribed.size()
+        << " prescribed\n";
     for (const auto &b : p.bodies)
       out << "  body '" << b.name << "' (material id " << int(b.id)
           << "): " << b.model << (b.fiber ? " + fibers" : "") << "\n";
@@ -139,9 +136,9 @@ namespace TissueContact
     for (const double v : u)
       u_max = std::max(u_max, std::abs(v));
     out << "Converged: " << statistics.increments << " increments ("
-        << statistics.cutbacks << " cut back), "
-        << statistics.newton_iterations << " Newton iterations, "
-        << statistics.linear_iterations << " linear iterations\n"
+        << statistics.cutbacks << " cut back), " << statistics.newton_iterations
+        << " Newton iterations, " << statistics.linear_iterations
+        << " linear iterations\n"
         << "  max |u_i| = " << u_max
         << ", min J = " << assembler.min_jacobian(u) << "\n"
         << "  convergence log: " << csv << "\n";

@@ -3,7 +3,6 @@
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/trilinos_precondition.h>
-
 #include <tissue_contact/solvers/linear_solver.h>
 
 namespace TissueContact
@@ -48,7 +47,7 @@ namespace TissueContact
 
 
     LinearSolver::LinearSolver(
-      const Parameters &                     parameters,
+      const Parameters                     &parameters,
       const std::vector<std::vector<bool>> &constant_modes)
       : parameters(parameters)
       , constant_modes(constant_modes)
@@ -56,16 +55,15 @@ namespace TissueContact
       AssertThrow(parameters.type == "GMRES+Jacobi" ||
                     parameters.type == "direct" ||
                     parameters.type == "GMRES+AMG",
-                  ExcMessage("Linear solver: unknown Type '" +
-                             parameters.type +
+                  ExcMessage("Linear solver: unknown Type '" + parameters.type +
                              "'; use GMRES+Jacobi, direct or GMRES+AMG"));
     }
 
 
     unsigned int
     LinearSolver::solve(const SparseMatrix<double> &K,
-                        Vector<double> &            x,
-                        const Vector<double> &      b) const
+                        Vector<double>             &x,
+                        const Vector<double>       &b) const
     {
       unsigned int iterations = 1;
       x                       = 0.;

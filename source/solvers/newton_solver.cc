@@ -1,9 +1,7 @@
-#include <deal.II/numerics/matrix_tools.h>
-
-#include <tissue_contact/solvers/newton_solver.h>
-
 #include <cmath>
+#include <deal.II/numerics/matrix_tools.h>
 #include <sstream>
+#include <tissue_contact/solvers/newton_solver.h>
 
 namespace TissueContact
 {
@@ -122,16 +120,17 @@ namespace TissueContact
     IncrementalNewtonSolver::IncrementalNewtonSolver(
       const Parameters &parameters)
       : parameters(parameters)
-    {}
+    {
+    }
 
 
     std::string
-    IncrementalNewtonSolver::newton(NonlinearProblem & problem,
-                                    Vector<double> &   u,
+    IncrementalNewtonSolver::newton(NonlinearProblem  &problem,
+                                    Vector<double>    &u,
                                     const double       load_factor,
                                     const unsigned int increment,
-                                    SolveStatistics &  statistics,
-                                    TimerOutput *      timer)
+                                    SolveStatistics   &statistics,
+                                    TimerOutput       *timer)
     {
       const auto n = problem.n_dofs();
       if (K.empty() || K.m() != n)
@@ -140,7 +139,7 @@ namespace TissueContact
         viscosity =
           problem.quasi_viscosity_diagonal(parameters.viscosity_factor);
 
-      const auto targets = problem.prescribed_values(load_factor);
+      const auto        targets = problem.prescribed_values(load_factor);
       std::vector<bool> prescribed(n, false);
       for (const auto &t : targets)
         prescribed[t.first] = true;
@@ -159,9 +158,9 @@ namespace TissueContact
 
       const LinearSolver linear_solver(parameters.linear_solver,
                                        problem.constant_modes());
-      Vector<double> R(n), R_trial(n), du(n), rhs(n), u_trial(n);
-      const double   f_ext = problem.external_force_norm(load_factor);
-      double         r_first = 0.;
+      Vector<double>     R(n), R_trial(n), du(n), rhs(n), u_trial(n);
+      const double       f_ext   = problem.external_force_norm(load_factor);
+      double             r_first = 0.;
 
       for (unsigned int it = 0;; ++it)
         {
@@ -230,7 +229,7 @@ namespace TissueContact
               }
             rhs = R;
             rhs *= -1.;
-            du  = 0.;
+            du = 0.;
             MatrixTools::apply_boundary_values(gap, K, du, rhs, true);
             info.linear_iterations = linear_solver.solve(K, du, rhs);
           }
@@ -278,8 +277,8 @@ namespace TissueContact
 
     SolveStatistics
     IncrementalNewtonSolver::solve(NonlinearProblem &problem,
-                                   Vector<double> &  u,
-                                   TimerOutput *     timer)
+                                   Vector<double>   &u,
+                                   TimerOutput      *timer)
     {
       SolveStatistics statistics;
       double          lambda = 0., lambda_prev = 0.;
@@ -289,7 +288,7 @@ namespace TissueContact
 
       while (lambda < 1. - 1e-12)
         {
-          const double lambda_new = std::min(1., lambda + increment_size);
+          const double       lambda_new = std::min(1., lambda + increment_size);
           const unsigned int its_before = statistics.newton_iterations;
 
           // two-point predictor on the free DoFs, prescribed DoFs at their

@@ -4,16 +4,15 @@
 // finite-difference derivative of the residual and is symmetric, the total
 // external force equals rho g V + t A, and an inverted element is reported.
 
+#include "../tests.h"
+
 #include <deal.II/base/function_parser.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
-
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/materials/fiber_reinforcement.h>
 #include <tissue_contact/materials/mooney_rivlin.h>
 #include <tissue_contact/materials/veronda.h>
-
-#include "../tests.h"
 
 using namespace dealii;
 using namespace TissueContact;
@@ -24,8 +23,10 @@ check(const unsigned int degree)
 {
   deallog << "=== P" << degree << std::endl;
   Triangulation<3> tria;
-  GridGenerator::subdivided_hyper_rectangle_with_simplices(
-    tria, {2, 2, 2}, Point<3>(0, 0, 0), Point<3>(1, 1, 1));
+  GridGenerator::subdivided_hyper_rectangle_with_simplices(tria,
+                                                           {2, 2, 2},
+                                                           Point<3>(0, 0, 0),
+                                                           Point<3>(1, 1, 1));
   GridTools::distort_random(0.2, tria, true, 7);
   for (const auto &cell : tria.active_cell_iterators())
     {
@@ -135,8 +136,8 @@ check(const unsigned int degree)
           << error_bound(asym / K.linfty_norm()) << std::endl;
 
   // an inverted element is reported, not assembled
-  Vector<double> u_bad(u);
-  const auto     cell = disc.dof_handler.begin_active();
+  Vector<double>                       u_bad(u);
+  const auto                           cell = disc.dof_handler.begin_active();
   std::vector<types::global_dof_index> dofs(disc.fe.n_dofs_per_cell());
   cell->get_dof_indices(dofs);
   for (unsigned int k = 0; k < dofs.size(); ++k)

@@ -5,18 +5,17 @@
 // printed in the paper and in the dissertation and shows what is wrong with
 // them (nonzero stress at rest; negative shear modulus).
 
+#include "../tests.h"
+
 #include <deal.II/base/function_parser.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
-
 #include <tissue_contact/materials/fiber_reinforcement.h>
 #include <tissue_contact/materials/linear_elastic.h>
 #include <tissue_contact/materials/mooney_rivlin.h>
 #include <tissue_contact/materials/neo_hookean.h>
 #include <tissue_contact/materials/saint_venant_kirchhoff.h>
 #include <tissue_contact/materials/veronda.h>
-
-#include "../tests.h"
 
 using namespace dealii;
 using namespace TissueContact::Materials;
@@ -78,14 +77,22 @@ namespace
         for (unsigned k = 0; k < 3; ++k)
           for (unsigned L = 0; L < 3; ++L)
             {
-              P_fd[k][L] = fd([&](const Tensor<2, 3> &G) {
-                return m.energy(G, X0);
-              }, F, k, L, h);
+              P_fd[k][L] =
+                fd([&](const Tensor<2, 3> &G) { return m.energy(G, X0); },
+                   F,
+                   k,
+                   L,
+                   h);
               for (unsigned i = 0; i < 3; ++i)
                 for (unsigned J = 0; J < 3; ++J)
-                  A_fd[i][J][k][L] = fd([&](const Tensor<2, 3> &G) {
-                    return m.first_piola_kirchhoff(G, X0)[i][J];
-                  }, F, k, L, h);
+                  A_fd[i][J][k][L] = fd(
+                    [&](const Tensor<2, 3> &G) {
+                      return m.first_piola_kirchhoff(G, X0)[i][J];
+                    },
+                    F,
+                    k,
+                    L,
+                    h);
             }
         err_P = std::max(err_P, (P_fd - r.P).norm() / scale_P);
         err_A = std::max(err_A, (A_fd - r.A).norm() / scale_A);
@@ -98,7 +105,7 @@ namespace
         // objectivity: P(QF) = Q P(F) and Psi(QF) = Psi(F)
         const Tensor<2, 3> Q  = random_rotation();
         const Tensor<2, 3> QF = Q * F;
-        err_obj = std::max(err_obj,
+        err_obj               = std::max(err_obj,
                            (m.first_piola_kirchhoff(QF, X0) - Q * r.P).norm() /
                              scale_P);
       }
@@ -120,13 +127,14 @@ namespace
     // touch A_1111, A_1122 and A_1212 = A_0101)
     const double mu     = r0.A[0][1][0][1];
     const double lambda = r0.A[1][1][2][2];
-    deallog << "mu = " << mu << " (table " << expected_mu << "), lambda = "
-            << lambda << " (table " << expected_l << ")" << std::endl;
+    deallog << "mu = " << mu << " (table " << expected_mu
+            << "), lambda = " << lambda << " (table " << expected_l << ")"
+            << std::endl;
     deallog << "A_xxxx = " << r0.A[0][0][0][0] << std::endl;
     // positive definiteness of the tangent on symmetric strains at rest
     LAPACKFullMatrix<double> K(6, 6);
     const unsigned int       voigt[6][2] = {
-      {0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+            {0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
     for (unsigned a = 0; a < 6; ++a)
       for (unsigned b = 0; b < 6; ++b)
         K(a, b) = r0.A[voigt[a][0]][voigt[a][1]][voigt[b][0]][voigt[b][1]] *
@@ -196,8 +204,7 @@ namespace
       Fm[0][1]        = -g;
       const double mu = (psi(Fp) - 2. * psi(I) + psi(Fm)) / (g * g);
       deallog << name << ": |P(I)| = "
-              << (P.norm() < 1e-4 ? std::string("0") :
-                                    std::to_string(P.norm()))
+              << (P.norm() < 1e-4 ? std::string("0") : std::to_string(P.norm()))
               << ", shear modulus " << std::setprecision(4) << mu
               << std::setprecision(6) << std::endl;
     };
@@ -215,17 +222,17 @@ main()
   auto fiber_x = std::make_shared<FunctionParser<3>>(3);
   fiber_x->initialize("x,y,z", "1; 0; 0", std::map<std::string, double>());
   auto fiber_field = std::make_shared<FunctionParser<3>>(3);
-  fiber_field->initialize("x,y,z", "1; x; 0.5*z+y", std::map<std::string, double>());
+  fiber_field->initialize("x,y,z",
+                          "1; x; 0.5*z+y",
+                          std::map<std::string, double>());
 
   check(NeoHookean(3., 5.), 3., 5.);
   check(MooneyRivlin(5., 1., 50.), 12., 204.);
   check(Veronda(7., 8., 100.), 56., 4. * (7. * 64. - 28. + 100.));
   check(SaintVenantKirchhoff(3., 5.), 3., 5.);
   check(LinearElastic(3., 5.), 3., 5.);
-  check(FiberReinforcement(std::make_unique<MooneyRivlin>(5., 1., 50.),
-                           2.,
-                           3.,
-                           fiber_x),
+  check(FiberReinforcement(
+          std::make_unique<MooneyRivlin>(5., 1., 50.), 2., 3., fiber_x),
         12.,
         204.);
   deallog << "fiber stiffness added to A_xxxx: 4 alpha beta^2 = "
@@ -233,10 +240,8 @@ main()
   // a position-dependent fiber field: at X0 the fiber is not along x, so the
   // shear entries include fiber stiffness and differ from the ground table
   deallog << "fiber field (1, x, 0.5 z + y) at X0" << std::endl;
-  check(FiberReinforcement(std::make_unique<Veronda>(7., 8., 100.),
-                           2.,
-                           3.,
-                           fiber_field),
+  check(FiberReinforcement(
+          std::make_unique<Veronda>(7., 8., 100.), 2., 3., fiber_field),
         56.,
         4. * (7. * 64. - 28. + 100.));
 

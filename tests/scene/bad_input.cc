@@ -4,13 +4,12 @@
 // match the mesh, and a diverging solve (whose converged increments are kept
 // on disk).
 
-#include <tissue_contact/base/exceptions.h>
-#include <tissue_contact/simulation/static_simulation.h>
-
 #include "../tests.h"
 
 #include <fstream>
 #include <sstream>
+#include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/simulation/static_simulation.h>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -39,14 +38,14 @@ namespace
   }
 
   void
-  write_tet_mesh(const std::string &file, const std::string &fourth_node,
+  write_tet_mesh(const std::string &file,
+                 const std::string &fourth_node,
                  const std::string &node_order)
   {
     std::ofstream out(file);
     out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n"
            "1 0 0 0\n2 1 0 0\n3 0 1 0\n4 "
-        << fourth_node
-        << "\n$EndNodes\n$Elements\n1\n1 4 2 1 1 " << node_order
+        << fourth_node << "\n$EndNodes\n$Elements\n1\n1 4 2 1 1 " << node_order
         << "\n$EndElements\n";
   }
 
@@ -79,9 +78,10 @@ main(int argc, char **argv)
   for (const std::string file : {"good.msh", "reversed.msh"})
     {
       std::ostringstream screen;
-      StaticSimulation   sim(
-        Scene::SceneParameters::from_string(quiet + mesh_file(file)), screen);
-      const auto cell = sim.get_scene().triangulation.begin_active();
+      StaticSimulation   sim(Scene::SceneParameters::from_string(quiet +
+                                                               mesh_file(file)),
+                           screen);
+      const auto         cell = sim.get_scene().triangulation.begin_active();
       deallog << file << ": read, tetrahedron volume "
               << ((cell->vertex(1) - cell->vertex(0)) *
                   cross_product_3d(cell->vertex(2) - cell->vertex(0),
@@ -92,8 +92,9 @@ main(int argc, char **argv)
   write_tet_mesh("flat.msh", "0.3 0.3 0", "1 2 3 4");
   run("degenerate element", mesh_file("flat.msh"));
 
-  run("unknown material model",
-      "subsection Bodies\n subsection Body 0\n  set Model = Ogden\n end\nend\n");
+  run(
+    "unknown material model",
+    "subsection Bodies\n subsection Body 0\n  set Model = Ogden\n end\nend\n");
   run("negative stiffness",
       "subsection Bodies\n subsection Body 0\n  set Mu = -2\n end\nend\n");
   run("Mooney-Rivlin without energy barrier",

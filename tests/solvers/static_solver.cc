@@ -8,19 +8,19 @@
 //  4. the line search: a 60 degree twist in one increment needs halved
 //     steps and converges; without halvings it fails with a clear error;
 //  5. quadratic convergence near the solution (direct solver);
-//  6. every linear solver and the quasi-viscosity reach the same solution.
+//  6. every linear solver and the quasi-viscosity reach the same solution;
+//  7. a rigid body (the skin layer of the layered block) rotated by 30
+//     degrees carries the free elastic body along without stressing it.
+
+#include "../tests.h"
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
-
+#include <sstream>
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/materials/mooney_rivlin.h>
 #include <tissue_contact/simulation/static_simulation.h>
-
-#include "../tests.h"
-
-#include <sstream>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -33,9 +33,9 @@ namespace
   class PatchProblem : public Solvers::NonlinearProblem
   {
   public:
-    PatchProblem(const Elasticity::Discretization &  disc,
+    PatchProblem(const Elasticity::Discretization   &disc,
                  const Elasticity::ElasticAssembler &assembler,
-                 const Tensor<2, 3> &                H)
+                 const Tensor<2, 3>                 &H)
       : disc(disc)
       , assembler(assembler)
       , H(H)
@@ -65,7 +65,7 @@ namespace
     bool
     assemble(const Vector<double> &u,
              const double          l,
-             Vector<double> &      R,
+             Vector<double>       &R,
              SparseMatrix<double> *K) override
     {
       return assembler.assemble(u, l, R, K);
@@ -98,21 +98,20 @@ namespace
           std::vector<types::global_dof_index> dofs(disc.fe.n_dofs_per_cell());
           cell->get_dof_indices(dofs);
           for (unsigned int k = 0; k < dofs.size(); ++k)
-            e = std::max(e,
-                         std::abs(u[dofs[k]] -
-                                  (H * X[dofs[k]])[disc.fe
-                                                     .system_to_component_index(
-                                                       k)
-                                                     .first]));
+            e = std::max(
+              e,
+              std::abs(
+                u[dofs[k]] -
+                (H * X[dofs[k]])[disc.fe.system_to_component_index(k).first]));
         }
       return e;
     }
 
   private:
-    const Elasticity::Discretization &           disc;
-    const Elasticity::ElasticAssembler &         assembler;
-    const Tensor<2, 3>                           H;
-    const std::vector<Point<3>>                  X;
+    const Elasticity::Discretization           &disc;
+    const Elasticity::ElasticAssembler         &assembler;
+    const Tensor<2, 3>                          H;
+    const std::vector<Point<3>>                 X;
     std::map<types::global_dof_index, unsigned> boundary;
   };
 
@@ -120,16 +119,19 @@ namespace
   patch_test(const unsigned int degree)
   {
     Triangulation<3> tria;
-    GridGenerator::subdivided_hyper_rectangle_with_simplices(
-      tria, {3, 3, 3}, Point<3>(0, 0, 0), Point<3>(1, 1, 1));
+    GridGenerator::subdivided_hyper_rectangle_with_simplices(tria,
+                                                             {3, 3, 3},
+                                                             Point<3>(0, 0, 0),
+                                                             Point<3>(1, 1, 1));
     GridTools::distort_random(0.25, tria, true, 3);
     const Materials::MooneyRivlin      material(5., 1., 50.);
     const Elasticity::Discretization   disc(tria, degree);
     const Elasticity::ElasticAssembler assembler(disc,
                                                  {{0, {&material, 1.}}},
                                                  Elasticity::DeadLoads());
-    const Tensor<2, 3> H({{0.15, 0.1, 0.}, {-0.05, -0.1, 0.08}, {0., 0.05, 0.2}});
-    PatchProblem       problem(disc, assembler, H);
+    const Tensor<2, 3>                 H(
+      {{0.15, 0.1, 0.}, {-0.05, -0.1, 0.08}, {0., 0.05, 0.2}});
+    PatchProblem                                 problem(disc, assembler, H);
     Solvers::IncrementalNewtonSolver::Parameters p;
     p.initial_increment = 1.;
     Solvers::IncrementalNewtonSolver solver(p);
@@ -162,17 +164,16 @@ namespace
 
   // Average of a displacement component over the DoFs of a boundary id.
   double
-  boundary_average(const StaticSimulation &sim,
+  boundary_average(const StaticSimulation  &sim,
                    const types::boundary_id id,
                    const unsigned int       component)
   {
-    const auto &disc = sim.discretization();
+    const auto                               &disc = sim.discretization();
     std::map<types::global_dof_index, double> values;
     std::vector<types::global_dof_index> face_dofs(disc.fe.n_dofs_per_face());
     for (const auto &cell : disc.dof_handler.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() &&
-            cell->face(f)->boundary_id() == id)
+        if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
           {
             cell->face(f)->get_dof_indices(face_dofs);
             for (unsigned int k = 0; k < face_dofs.size(); ++k)
@@ -192,19 +193,20 @@ namespace
     // E = 1000, nu = 0 (mu = 500, lambda = 0), L = 1, b = h = 0.1,
     // q = rho g A = 0.01 * 0.01: w = q L^4 / (8 E I), I = b h^3 / 12
     const double E = 1000., g = 0.01, b = 0.1, h = 0.1, L = 1.;
-    const double w_eb = g * b * h * std::pow(L, 4) / (8. * E * b * h * h * h / 12.);
+    const double w_eb =
+      g * b * h * std::pow(L, 4) / (8. * E * b * h * h * h / 12.);
     std::ostringstream log;
     const auto         sim = solve(
       scene("set Model = neo-Hookean\n set Mu = 500\n set Lambda = 0\n",
             "subsection Mesh\n set Box upper corner = 1, 0.1, 0.1\n"
-            " set Box subdivisions = " +
+                    " set Box subdivisions = " +
               std::to_string(n_length) +
               ", 2, 2\nend\n"
-              "subsection Discretization\n set Polynomial degree = " +
+                      "subsection Discretization\n set Polynomial degree = " +
               std::to_string(degree) +
               "\nend\n"
-              "subsection Loads\n set Gravity = 0, 0, -0.01\nend\n"
-              "subsection Load stepping\n set Initial increment = 1\nend\n"),
+                      "subsection Loads\n set Gravity = 0, 0, -0.01\nend\n"
+                      "subsection Load stepping\n set Initial increment = 1\nend\n"),
       log);
     const double w = -boundary_average(*sim, 1, 2);
     deallog << "cantilever P" << degree << " " << n_length
@@ -232,17 +234,17 @@ namespace
                     bcs + "end\n"),
             log);
     const auto q = sim->elastic_assembler().cell_quantities(sim->solution());
-    deallog << "90 degree rigid rotation, " << model
-            << ": max von Mises / mu "
+    deallog << "90 degree rigid rotation, " << model << ": max von Mises / mu "
             << error_bound(q.von_mises.linfty_norm() / 3., -10)
             << ", max |J - 1| "
-            << error_bound([&] {
-                 double e = 0.;
-                 for (const double J : q.J)
-                   e = std::max(e, std::abs(J - 1.));
-                 return e;
-               }(),
-                           -10)
+            << error_bound(
+                 [&] {
+                   double e = 0.;
+                   for (const double J : q.J)
+                     e = std::max(e, std::abs(J - 1.));
+                   return e;
+                 }(),
+                 -10)
             << std::endl;
   }
 
@@ -318,8 +320,7 @@ namespace
       }
     catch (const std::exception &e)
       {
-        deallog << "without halvings: error: " << error_message(e)
-                << std::endl;
+        deallog << "without halvings: error: " << error_message(e) << std::endl;
       }
   }
 
@@ -331,7 +332,7 @@ namespace
                 " set Maximum increment = 0.25\nend\n"),
           log);
     // the last increment: p_k = log(r_k+1 / r_k) / log(r_k / r_k-1)
-    const auto        all = rows(log.str());
+    const auto          all = rows(log.str());
     std::vector<double> r;
     for (auto it = all.rbegin(); it != all.rend(); ++it)
       {
@@ -377,26 +378,66 @@ namespace
       for (const auto &r : rows(log.str()))
         its += (r.second > 0.);
       deallog << name << ": |u - u_direct| / |u_direct| "
-              << error_bound(d.l2_norm() / reference->solution().l2_norm(),
-                             -10)
+              << error_bound(d.l2_norm() / reference->solution().l2_norm(), -10)
               << std::endl;
       return its;
     };
-    const unsigned int jacobi = compare(
-      "GMRES+Jacobi (rel. tol. 0.1)",
-      "subsection Linear solver\n set Type = GMRES+Jacobi\nend\n");
+    const unsigned int jacobi =
+      compare("GMRES+Jacobi (rel. tol. 0.1)",
+              "subsection Linear solver\n set Type = GMRES+Jacobi\nend\n");
     const unsigned int amg =
       compare("GMRES+AMG (rel. tol. 0.1)",
               "subsection Linear solver\n set Type = GMRES+AMG\nend\n");
-    const unsigned int viscous = compare(
-      "direct with quasi-viscosity",
-      "subsection Newton\n set Quasi-viscosity = true\nend\n");
+    const unsigned int viscous =
+      compare("direct with quasi-viscosity",
+              "subsection Newton\n set Quasi-viscosity = true\nend\n");
     unsigned int direct = 0;
     for (const auto &r : rows(log.str()))
       direct += (r.second > 0.);
     deallog << "Newton iterations: direct " << direct << ", GMRES+Jacobi "
             << jacobi << ", GMRES+AMG " << amg << ", direct + quasi-viscosity "
             << viscous << std::endl;
+  }
+  void
+  rigid_body()
+  {
+    std::ostringstream log;
+    const auto         sim = solve(
+      "subsection Output\n set Write VTU = false\n set Directory = .\nend\n"
+              "subsection Mesh\n set Source = file\n set File = " SOURCE_DIR
+      "/../scene/layered_block_v2.msh\nend\n"
+              "subsection Bodies\n set Number of bodies = 2\n"
+              " subsection Body 0\n  set Material id = 1\n  set Model = Veronda\n"
+              "  set Alpha = 7\n  set Beta = 8\n  set a = 100\n end\n"
+              " subsection Body 1\n  set Material id = 2\n  set Model = rigid\n"
+              "  subsection Rigid motion\n   set Rotation axis = 1, 1, 1\n"
+              "   set Rotation center = 0.5, 0.25, 0.3\n   set Rotation angle = 30\n"
+              "   set Translation = 0.1, 0, 0\n  end\n end\nend\n"
+              "subsection Boundary conditions\n"
+              " set Number of Dirichlet conditions = 0\nend\n",
+      log);
+    const auto &disc  = sim->discretization();
+    const auto  X     = disc.support_points();
+    const auto &body  = sim->get_scene().parameters.bodies[1].rigid_motion;
+    double      error = 0., u_max = 0.;
+    std::vector<types::global_dof_index> dofs(disc.fe.n_dofs_per_cell());
+    for (const auto &cell : disc.dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int k = 0; k < dofs.size(); ++k)
+          {
+            const unsigned int c = disc.fe.system_to_component_index(k).first;
+            const double       expected = body.displacement(X[dofs[k]], 1.)[c];
+            error =
+              std::max(error, std::abs(sim->solution()[dofs[k]] - expected));
+            u_max = std::max(u_max, std::abs(expected));
+          }
+      }
+    const auto q = sim->elastic_assembler().cell_quantities(sim->solution());
+    deallog << "rigid skin layer rotated 30 degrees: free muscle follows, "
+            << "max |u - rigid motion| / max |u| "
+            << error_bound(error / u_max, -10) << ", max von Mises / mu "
+            << error_bound(q.von_mises.linfty_norm() / 56., -8) << std::endl;
   }
 } // namespace
 
@@ -414,4 +455,5 @@ main(int argc, char **argv)
   line_search();
   quadratic_convergence();
   solvers_agree();
+  rigid_body();
 }

@@ -29,13 +29,13 @@ namespace TissueContact
       Discretization(const Triangulation<3> &triangulation,
                      const unsigned int      degree);
 
-      const unsigned int      degree;
-      const FESystem<3>       fe;
-      const MappingFE<3>      mapping;
-      const QGaussSimplex<3>  quadrature;
-      const QGaussSimplex<2>  face_quadrature;
-      DoFHandler<3>           dof_handler;
-      SparsityPattern         sparsity_pattern;
+      const unsigned int     degree;
+      const FESystem<3>      fe;
+      const MappingFE<3>     mapping;
+      const QGaussSimplex<3> quadrature;
+      const QGaussSimplex<2> face_quadrature;
+      DoFHandler<3>          dof_handler;
+      SparsityPattern        sparsity_pattern;
 
       /** Number of displacement unknowns. */
       types::global_dof_index

@@ -1,14 +1,12 @@
 #pragma once
 
+#include <array>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
-
+#include <map>
 #include <tissue_contact/elasticity/discretization.h>
 #include <tissue_contact/materials/material.h>
-
-#include <array>
-#include <map>
 
 namespace TissueContact
 {
@@ -29,7 +27,7 @@ namespace TissueContact
      * reference tractions @f$t_0@f$ per boundary id. */
     struct DeadLoads
     {
-      Tensor<1, 3>                                 gravity;
+      Tensor<1, 3>                               gravity;
       std::map<types::boundary_id, Tensor<1, 3>> tractions;
     };
 
@@ -59,9 +57,9 @@ namespace TissueContact
     class ElasticAssembler
     {
     public:
-      ElasticAssembler(const Discretization &                      disc,
+      ElasticAssembler(const Discretization                         &disc,
                        const std::map<types::material_id, BodyData> &bodies,
-                       const DeadLoads &                            loads);
+                       const DeadLoads                              &loads);
 
       /**
        * Compute @p R and, when @p K is not null, the tangent at the
@@ -73,7 +71,7 @@ namespace TissueContact
       bool
       assemble(const Vector<double> &u,
                const double          load_factor,
-               Vector<double> &      R,
+               Vector<double>       &R,
                SparseMatrix<double> *K) const;
 
       /** @f$\Pi(u,\lambda)@f$, or +infinity if an element is inverted. */
@@ -107,7 +105,7 @@ namespace TissueContact
       cell_quantities(const Vector<double> &u) const;
 
     private:
-      const Discretization &                       disc;
+      const Discretization                        &disc;
       const std::map<types::material_id, BodyData> bodies;
       Vector<double>                               f_ext;
 

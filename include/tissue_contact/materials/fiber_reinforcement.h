@@ -1,10 +1,8 @@
 #pragma once
 
 #include <deal.II/base/function.h>
-
-#include <tissue_contact/materials/hyperelastic_material.h>
-
 #include <memory>
+#include <tissue_contact/materials/hyperelastic_material.h>
 
 namespace TissueContact
 {
@@ -46,12 +44,12 @@ namespace TissueContact
 
       double
       energy_C(const SymmetricTensor<2, 3> &C,
-               const Point<3> &             X) const override;
+               const Point<3>              &X) const override;
       void
       stress_C(const SymmetricTensor<2, 3> &C,
-               const Point<3> &             X,
-               SymmetricTensor<2, 3> &      S,
-               SymmetricTensor<4, 3> *      CC) const override;
+               const Point<3>              &X,
+               SymmetricTensor<2, 3>       &S,
+               SymmetricTensor<4, 3>       *CC) const override;
       /** The ground material's equivalents (the fibers add anisotropic
        * stiffness @f$4\alpha_f\beta_f^2@f$ along @f$f\otimes f\otimes f
        * \otimes f@f$ only). */

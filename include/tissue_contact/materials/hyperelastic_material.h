@@ -25,21 +25,21 @@ namespace TissueContact
       /** @f$S(C)@f$, and @f$\mathbb{C}(C)@f$ when @p CC is not null. */
       virtual void
       stress_C(const SymmetricTensor<2, 3> &C,
-               const Point<3> &             X,
-               SymmetricTensor<2, 3> &      S,
-               SymmetricTensor<4, 3> *      CC) const = 0;
+               const Point<3>              &X,
+               SymmetricTensor<2, 3>       &S,
+               SymmetricTensor<4, 3>       *CC) const = 0;
 
       double
       energy(const Tensor<2, 3> &F, const Point<3> &X) const override;
 
       Tensor<2, 3>
       first_piola_kirchhoff(const Tensor<2, 3> &F,
-                            const Point<3> &    X) const override;
+                            const Point<3>     &X) const override;
 
       void
       evaluate(const Tensor<2, 3> &F,
-               const Point<3> &    X,
-               MaterialResponse &  response) const override;
+               const Point<3>     &X,
+               MaterialResponse   &response) const override;
     };
   } // namespace Materials
 } // namespace TissueContact

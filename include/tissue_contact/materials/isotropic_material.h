@@ -55,13 +55,13 @@ namespace TissueContact
 
       double
       energy_C(const SymmetricTensor<2, 3> &C,
-               const Point<3> &             X) const override;
+               const Point<3>              &X) const override;
 
       void
       stress_C(const SymmetricTensor<2, 3> &C,
-               const Point<3> &             X,
-               SymmetricTensor<2, 3> &      S,
-               SymmetricTensor<4, 3> *      CC) const override;
+               const Point<3>              &X,
+               SymmetricTensor<2, 3>       &S,
+               SymmetricTensor<4, 3>       *CC) const override;
     };
   } // namespace Materials
 } // namespace TissueContact

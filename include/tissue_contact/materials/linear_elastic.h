@@ -29,11 +29,11 @@ namespace TissueContact
       energy(const Tensor<2, 3> &F, const Point<3> &X) const override;
       Tensor<2, 3>
       first_piola_kirchhoff(const Tensor<2, 3> &F,
-                            const Point<3> &    X) const override;
+                            const Point<3>     &X) const override;
       void
       evaluate(const Tensor<2, 3> &F,
-               const Point<3> &    X,
-               MaterialResponse &  response) const override;
+               const Point<3>     &X,
+               MaterialResponse   &response) const override;
       std::pair<double, double>
       lame_equivalents() const override
       {

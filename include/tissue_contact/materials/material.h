@@ -3,7 +3,6 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
-
 #include <string>
 
 namespace TissueContact
@@ -23,7 +22,7 @@ namespace TissueContact
      */
     struct MaterialResponse
     {
-      double      psi = 0.;
+      double       psi = 0.;
       Tensor<2, 3> P;
       Tensor<4, 3> A;
     };
@@ -51,14 +50,13 @@ namespace TissueContact
 
       /** First Piola-Kirchhoff stress @f$P(F)@f$. */
       virtual Tensor<2, 3>
-      first_piola_kirchhoff(const Tensor<2, 3> &F,
-                            const Point<3> &    X) const = 0;
+      first_piola_kirchhoff(const Tensor<2, 3> &F, const Point<3> &X) const = 0;
 
       /** Energy, stress and tangent together (the cheapest way to get all). */
       virtual void
       evaluate(const Tensor<2, 3> &F,
-               const Point<3> &    X,
-               MaterialResponse &  response) const = 0;
+               const Point<3>     &X,
+               MaterialResponse   &response) const = 0;
 
       /**
        * Small-strain Lame parameters @f$(\mu,\lambda)@f$ of the model at
@@ -84,8 +82,8 @@ namespace TissueContact
     push_forward_tangent(const Tensor<2, 3> &F,
                          const Tensor<2, 3> &S,
                          const Tensor<4, 3> &CC,
-                         Tensor<2, 3> &      P,
-                         Tensor<4, 3> &      A);
+                         Tensor<2, 3>       &P,
+                         Tensor<4, 3>       &A);
 
 
     /**

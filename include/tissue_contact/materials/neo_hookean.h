@@ -8,8 +8,8 @@ namespace TissueContact
   {
     /**
      * Compressible neo-Hookean material, the cheap model:
-     * @f$\Psi = \frac{\mu}{2}(I_1 - 3) - \mu\ln J + \frac{\lambda}{2}(\ln J)^2@f$
-     * with @f$\ln J = \frac12\ln I_3@f$ (doc/theory/03-materials.md).
+     * @f$\Psi = \frac{\mu}{2}(I_1 - 3) - \mu\ln J + \frac{\lambda}{2}(\ln
+     * J)^2@f$ with @f$\ln J = \frac12\ln I_3@f$ (doc/theory/03-materials.md).
      */
     class NeoHookean : public IsotropicMaterial
     {

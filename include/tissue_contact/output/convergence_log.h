@@ -1,10 +1,9 @@
 #pragma once
 
-#include <tissue_contact/solvers/newton_solver.h>
-
 #include <fstream>
 #include <ostream>
 #include <string>
+#include <tissue_contact/solvers/newton_solver.h>
 
 namespace TissueContact
 {

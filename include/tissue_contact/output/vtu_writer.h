@@ -1,11 +1,9 @@
 #pragma once
 
 #include <deal.II/lac/vector.h>
-
+#include <string>
 #include <tissue_contact/elasticity/discretization.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
-
-#include <string>
 #include <utility>
 #include <vector>
 
@@ -32,9 +30,9 @@ namespace TissueContact
       /** Write the state @p u at load factor (or time) @p time; returns the
        * file name written. */
       std::string
-      write(const Elasticity::Discretization &  disc,
+      write(const Elasticity::Discretization   &disc,
             const Elasticity::ElasticAssembler &assembler,
-            const Vector<double> &              u,
+            const Vector<double>               &u,
             const double                        time);
 
       /** Path of the PVD file. */
@@ -42,7 +40,7 @@ namespace TissueContact
       pvd_file() const;
 
     private:
-      const std::string                         directory, base_name;
+      const std::string                           directory, base_name;
       std::vector<std::pair<double, std::string>> records;
     };
   } // namespace Output

@@ -3,11 +3,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
-
+#include <string>
 #include <tissue_contact/scene/prescribed_motion.h>
 #include <tissue_contact/solvers/newton_solver.h>
-
-#include <string>
 #include <vector>
 
 namespace TissueContact
@@ -36,15 +34,15 @@ namespace TissueContact
      * material, density, optional fibers, or its rigid motion. */
     struct BodyParameters
     {
-      std::string        name  = "body";
-      types::material_id id    = 0;
-      std::string        model = "neo-Hookean";
+      std::string        name    = "body";
+      types::material_id id      = 0;
+      std::string        model   = "neo-Hookean";
       double             density = 1.;
       double             mu = 1., lambda = 1.;
       double             C1 = 1., C2 = 0., a = 1.;
       double             alpha = 1., beta = 1.;
-      bool               fiber         = false;
-      double             fiber_alpha   = 0., fiber_beta = 1.;
+      bool               fiber       = false;
+      double             fiber_alpha = 0., fiber_beta = 1.;
       std::string        fiber_direction = "1; 0; 0";
       PrescribedMotion   rigid_motion;
 
@@ -85,9 +83,9 @@ namespace TissueContact
     /** prm subsection "Output". */
     struct OutputParameters
     {
-      std::string directory = "output";
-      std::string base_name = "solution";
-      bool        write_vtu = true;
+      std::string directory    = "output";
+      std::string base_name    = "solution";
+      bool        write_vtu    = true;
       bool        print_timing = true;
 
       static void
@@ -104,18 +102,18 @@ namespace TissueContact
      */
     struct SceneParameters
     {
-      MeshParameters                   mesh;
-      unsigned int                     degree = 1;
-      std::vector<BodyParameters>      bodies;
-      std::vector<DirichletParameters> dirichlet;
-      std::vector<TractionParameters>  tractions;
-      Tensor<1, 3>                     gravity;
+      MeshParameters                               mesh;
+      unsigned int                                 degree = 1;
+      std::vector<BodyParameters>                  bodies;
+      std::vector<DirichletParameters>             dirichlet;
+      std::vector<TractionParameters>              tractions;
+      Tensor<1, 3>                                 gravity;
       Solvers::IncrementalNewtonSolver::Parameters solver;
-      OutputParameters                 output;
+      OutputParameters                             output;
 
       /** Declare everything, with the given numbers of subsections. */
       static void
-      declare(ParameterHandler &prm,
+      declare(ParameterHandler  &prm,
               const unsigned int n_bodies    = 1,
               const unsigned int n_dirichlet = 1,
               const unsigned int n_tractions = 1);

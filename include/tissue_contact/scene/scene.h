@@ -1,13 +1,11 @@
 #pragma once
 
 #include <deal.II/grid/tria.h>
-
+#include <memory>
 #include <tissue_contact/elasticity/discretization.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/materials/material.h>
 #include <tissue_contact/scene/parameters.h>
-
-#include <memory>
 #include <vector>
 
 namespace TissueContact

@@ -1,13 +1,11 @@
 #pragma once
 
 #include <deal.II/base/timer.h>
-
+#include <ostream>
 #include <tissue_contact/elasticity/discretization.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/scene/scene.h>
 #include <tissue_contact/solvers/newton_solver.h>
-
-#include <ostream>
 
 namespace TissueContact
 {
@@ -25,7 +23,7 @@ namespace TissueContact
   {
   public:
     StaticSimulation(const Scene::SceneParameters &parameters,
-                     std::ostream &                out);
+                     std::ostream                 &out);
 
     /** Solve and write output. Throws (after keeping every result already
      * written) if the solve fails. */
@@ -71,7 +69,7 @@ namespace TissueContact
     bool
     assemble(const Vector<double> &u,
              const double          load_factor,
-             Vector<double> &      R,
+             Vector<double>       &R,
              SparseMatrix<double> *K) override;
     std::map<types::global_dof_index, double>
     prescribed_values(const double load_factor) const override;
@@ -83,11 +81,11 @@ namespace TissueContact
     constant_modes() const override;
 
   private:
-    Scene::Scene                       scene;
-    Elasticity::Discretization         disc;
-    Elasticity::ElasticAssembler       assembler;
-    std::vector<Scene::PrescribedDof>  prescribed;
-    Vector<double>                     u;
-    std::ostream &                     out;
+    Scene::Scene                      scene;
+    Elasticity::Discretization        disc;
+    Elasticity::ElasticAssembler      assembler;
+    std::vector<Scene::PrescribedDof> prescribed;
+    Vector<double>                    u;
+    std::ostream                     &out;
   };
 } // namespace TissueContact

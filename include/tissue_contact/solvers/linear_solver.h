@@ -3,7 +3,6 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
-
 #include <string>
 #include <vector>
 
@@ -43,15 +42,15 @@ namespace TissueContact
 
       /** @p constant_modes: per component, which DoFs belong to it (for
        * AMG; may be empty). */
-      LinearSolver(const Parameters &                     parameters,
+      LinearSolver(const Parameters                     &parameters,
                    const std::vector<std::vector<bool>> &constant_modes = {});
 
       /** Solve @f$K x = b@f$; returns the number of iterations (1 for the
        * direct solver). Throws if the result is not finite. */
       unsigned int
       solve(const SparseMatrix<double> &K,
-            Vector<double> &            x,
-            const Vector<double> &      b) const;
+            Vector<double>             &x,
+            const Vector<double>       &b) const;
 
       const Parameters parameters;
 

@@ -2,12 +2,10 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
-
-#include <tissue_contact/solvers/linear_solver.h>
-#include <tissue_contact/solvers/nonlinear_problem.h>
-
 #include <functional>
 #include <string>
+#include <tissue_contact/solvers/linear_solver.h>
+#include <tissue_contact/solvers/nonlinear_problem.h>
 
 namespace TissueContact
 {
@@ -58,20 +56,20 @@ namespace TissueContact
       /** Entries of the prm subsections "Load stepping" and "Newton". */
       struct Parameters
       {
-        double       initial_increment  = 0.25;
-        double       minimum_increment  = 1e-3;
-        double       maximum_increment  = 1.;
-        double       growth_factor      = 1.5;
-        unsigned int easy_iterations    = 5;
+        double       initial_increment   = 0.25;
+        double       minimum_increment   = 1e-3;
+        double       maximum_increment   = 1.;
+        double       growth_factor       = 1.5;
+        unsigned int easy_iterations     = 5;
         bool         two_point_predictor = true;
 
-        unsigned int max_iterations       = 25;
-        double       residual_tolerance   = 1e-8;
-        double       absolute_tolerance   = 1e-12;
-        unsigned int max_halvings         = 12;
-        bool         quasi_viscosity      = false;
-        double       viscosity_factor     = 0.1;
-        double       viscosity_time_step  = 1.;
+        unsigned int max_iterations      = 25;
+        double       residual_tolerance  = 1e-8;
+        double       absolute_tolerance  = 1e-12;
+        unsigned int max_halvings        = 12;
+        bool         quasi_viscosity     = false;
+        double       viscosity_factor    = 0.1;
+        double       viscosity_time_step = 1.;
 
         LinearSolver::Parameters linear_solver;
 
@@ -86,8 +84,8 @@ namespace TissueContact
       /** Called after every Newton iteration. */
       std::function<void(const IterationInfo &)> on_iteration;
       /** Called after every converged increment with its load factor. */
-      std::function<void(unsigned int increment,
-                         double       load_factor,
+      std::function<void(unsigned int          increment,
+                         double                load_factor,
                          const Vector<double> &u)>
         on_increment;
       /** Called when an increment fails and is cut back. */
@@ -102,8 +100,8 @@ namespace TissueContact
        */
       SolveStatistics
       solve(NonlinearProblem &problem,
-            Vector<double> &  u,
-            TimerOutput *     timer = nullptr);
+            Vector<double>   &u,
+            TimerOutput      *timer = nullptr);
 
       /**
        * One Newton solve (LOOPs 2 and 3) at a fixed load factor starting
@@ -111,12 +109,12 @@ namespace TissueContact
        * (u is then unspecified).
        */
       std::string
-      newton(NonlinearProblem &problem,
-             Vector<double> &  u,
-             const double      load_factor,
+      newton(NonlinearProblem  &problem,
+             Vector<double>    &u,
+             const double       load_factor,
              const unsigned int increment,
-             SolveStatistics & statistics,
-             TimerOutput *     timer = nullptr);
+             SolveStatistics   &statistics,
+             TimerOutput       *timer = nullptr);
 
       const Parameters parameters;
 

@@ -3,7 +3,6 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
-
 #include <map>
 
 namespace TissueContact
@@ -38,7 +37,7 @@ namespace TissueContact
       virtual bool
       assemble(const Vector<double> &u,
                const double          load_factor,
-               Vector<double> &      R,
+               Vector<double>       &R,
                SparseMatrix<double> *K) = 0;
 
       /** The prescribed DoFs and their values at @p load_factor. */
