@@ -6,6 +6,7 @@
 #include <deal.II/lac/vector.h>
 #include <map>
 #include <tissue_contact/elasticity/discretization.h>
+#include <tissue_contact/materials/hyperelastic_material.h>
 #include <tissue_contact/materials/material.h>
 
 namespace TissueContact
@@ -108,6 +109,33 @@ namespace TissueContact
       const Discretization                        &disc;
       const std::map<types::material_id, BodyData> bodies;
       Vector<double>                               f_ext;
+
+      /**
+       * Reference geometry, computed once: the configuration of a total
+       * Lagrangian formulation never changes, so the shape gradients
+       * @f$\nabla_X N_a@f$, weights @f$JxW@f$ and points of every
+       * quadrature point of every cell are stored instead of re-running
+       * FEValues in every assembly (the hot loop touches only these arrays).
+       */
+      unsigned int                         n_q, n_nodes, n_local;
+      std::vector<Tensor<1, 3>>            grad_N;    // [cell][q][node]
+      std::vector<double>                  JxW;       // [cell][q]
+      std::vector<Point<3>>                X_q;       // [cell][q]
+      std::vector<types::global_dof_index> cell_dofs; // [cell][k]
+      // cell_dofs in ascending order, and the local index of each
+      std::vector<types::global_dof_index>     sorted_dofs;   // [cell][j]
+      std::vector<unsigned char>               sorted_local;  // [cell][j]
+      std::vector<const Materials::Material *> cell_material; // null: rigid
+      std::vector<const Materials::HyperelasticMaterial *> cell_hyperelastic;
+      std::vector<unsigned int> local_component, local_node; // of dof k
+      std::vector<unsigned int> deformable_cells;
+
+      /** @f$F = I + \sum_k u_k\, e_{c_k}\otimes\nabla N_{a_k}@f$ at
+       * quadrature point @p q of cell @p c. */
+      Tensor<2, 3>
+      deformation_gradient(const unsigned int    c,
+                           const unsigned int    q,
+                           const Vector<double> &u) const;
 
       const BodyData *
       body(const types::material_id id) const;

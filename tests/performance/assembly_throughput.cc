@@ -1,0 +1,192 @@
+// Benchmark (not a test): residual + tangent assembly throughput in
+// tetrahedra per second for P1 and P2, every material and three mesh sizes,
+// on one thread and on all threads; then the time split of one Newton
+// iteration (assembly / linear solve) for each linear solver.
+//
+//   cmake --build build --target performance
+//   build/tests/performance/assembly_throughput [--quick]
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/multithread_info.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/numerics/matrix_tools.h>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <tissue_contact/elasticity/elastic_assembler.h>
+#include <tissue_contact/materials/fiber_reinforcement.h>
+#include <tissue_contact/materials/linear_elastic.h>
+#include <tissue_contact/materials/mooney_rivlin.h>
+#include <tissue_contact/materials/neo_hookean.h>
+#include <tissue_contact/materials/saint_venant_kirchhoff.h>
+#include <tissue_contact/materials/veronda.h>
+#include <tissue_contact/solvers/linear_solver.h>
+
+using namespace dealii;
+using namespace TissueContact;
+
+namespace
+{
+  std::vector<std::unique_ptr<Materials::Material>>
+  all_materials()
+  {
+    auto fiber = std::make_shared<FunctionParser<3>>(3);
+    fiber->initialize("x,y,z", "1; 0; 0", std::map<std::string, double>());
+    std::vector<std::unique_ptr<Materials::Material>> m;
+    m.push_back(std::make_unique<Materials::LinearElastic>(3., 5.));
+    m.push_back(std::make_unique<Materials::SaintVenantKirchhoff>(3., 5.));
+    m.push_back(std::make_unique<Materials::NeoHookean>(3., 5.));
+    m.push_back(std::make_unique<Materials::MooneyRivlin>(5., 1., 50.));
+    m.push_back(std::make_unique<Materials::Veronda>(7., 8., 100.));
+    m.push_back(std::make_unique<Materials::FiberReinforcement>(
+      std::make_unique<Materials::MooneyRivlin>(5., 1., 50.), 2., 3., fiber));
+    return m;
+  }
+
+  // A smooth displacement with J > 0 (so every material is evaluated).
+  Vector<double>
+  some_displacement(const Elasticity::Discretization &disc)
+  {
+    const auto                           X = disc.support_points();
+    Vector<double>                       u(disc.n_dofs());
+    std::vector<types::global_dof_index> dofs(disc.fe.n_dofs_per_cell());
+    for (const auto &cell : disc.dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int k = 0; k < dofs.size(); ++k)
+          {
+            const unsigned int c = disc.fe.system_to_component_index(k).first;
+            const Point<3>    &x = X[dofs[k]];
+            u[dofs[k]] = 0.05 * std::sin(3. * x[0] + c) * std::cos(2. * x[1]) +
+                         0.02 * x[2];
+          }
+      }
+    return u;
+  }
+
+  // Seconds per residual + tangent assembly (best of a few repetitions).
+  double
+  time_assembly(const Elasticity::ElasticAssembler &assembler,
+                const Elasticity::Discretization   &disc,
+                const Vector<double>               &u)
+  {
+    Vector<double>       R(disc.n_dofs());
+    SparseMatrix<double> K(disc.sparsity_pattern);
+    double               best = 1e300;
+    for (unsigned int r = 0; r < 3; ++r)
+      {
+        Timer timer;
+        assembler.assemble(u, 1., R, &K);
+        timer.stop();
+        best = std::min(best, timer.wall_time());
+      }
+    return best;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc,
+                                       argv,
+                                       numbers::invalid_unsigned_int);
+  const bool         quick     = argc > 1 && std::string(argv[1]) == "--quick";
+  const unsigned int n_threads = MultithreadInfo::n_threads();
+  const auto         materials = all_materials();
+
+  std::cout << "Residual + tangent assembly throughput, in 1e6 tetrahedra "
+               "per second (best of 3)\n"
+            << "threads: 1 and " << n_threads << "\n\n"
+            << std::left << std::setw(4) << "P" << std::setw(10) << "tets"
+            << std::setw(10) << "dofs" << std::setw(26) << "material"
+            << std::setw(12) << "1 thread" << std::setw(12)
+            << (std::to_string(n_threads) + " threads") << "\n";
+
+  for (const unsigned int degree : {1u, 2u})
+    {
+      const std::vector<unsigned int> sizes =
+        quick       ? std::vector<unsigned int>{6} :
+        degree == 1 ? std::vector<unsigned int>{8, 16, 28} :
+                      std::vector<unsigned int>{6, 10, 16};
+      for (const unsigned int n : sizes)
+        {
+          Triangulation<3> tria;
+          GridGenerator::subdivided_hyper_rectangle_with_simplices(
+            tria, {n, n, n}, Point<3>(0, 0, 0), Point<3>(1, 1, 1));
+          const Elasticity::Discretization disc(tria, degree);
+          const Vector<double>             u = some_displacement(disc);
+          for (const auto &m : materials)
+            {
+              const Elasticity::ElasticAssembler assembler(
+                disc, {{0, {m.get(), 1.}}}, Elasticity::DeadLoads());
+              MultithreadInfo::set_thread_limit(1);
+              const double t1 = time_assembly(assembler, disc, u);
+              MultithreadInfo::set_thread_limit(n_threads);
+              const double tn = time_assembly(assembler, disc, u);
+              std::cout << std::setw(4) << degree << std::setw(10)
+                        << tria.n_active_cells() << std::setw(10)
+                        << disc.n_dofs() << std::setw(26) << m->name()
+                        << std::fixed << std::setprecision(3) << std::setw(12)
+                        << tria.n_active_cells() / t1 / 1e6 << std::setw(12)
+                        << tria.n_active_cells() / tn / 1e6 << std::defaultfloat
+                        << "\n";
+            }
+        }
+    }
+
+  // One Newton iteration of a clamped cube under a body load.
+  std::cout << "\nOne Newton iteration (Mooney-Rivlin cube, bottom clamped): "
+               "seconds, "
+            << n_threads << " threads\n"
+            << std::setw(4) << "P" << std::setw(10) << "dofs" << std::setw(16)
+            << "solver" << std::setw(12) << "assembly" << std::setw(12)
+            << "solve" << std::setw(10) << "lin.its"
+            << "\n";
+  const Materials::MooneyRivlin mr(5., 1., 50.);
+  for (const auto &[degree, n] :
+       std::vector<std::pair<unsigned, unsigned>>{{1, quick ? 6u : 20u},
+                                                  {2, quick ? 4u : 10u}})
+    {
+      Triangulation<3> tria;
+      GridGenerator::subdivided_hyper_rectangle_with_simplices(
+        tria, {n, n, n}, Point<3>(0, 0, 0), Point<3>(1, 1, 1));
+      const Elasticity::Discretization disc(tria, degree);
+      Elasticity::DeadLoads            loads;
+      loads.gravity = Tensor<1, 3>({0., 0., -1.});
+      const Elasticity::ElasticAssembler        assembler(disc,
+                                                   {{0, {&mr, 1.}}},
+                                                   loads);
+      std::map<types::global_dof_index, double> clamp;
+      const auto                                X = disc.support_points();
+      for (types::global_dof_index i = 0; i < disc.n_dofs(); ++i)
+        if (X[i][2] < 1e-12)
+          clamp[i] = 0.;
+      for (const std::string type : {"direct", "GMRES+Jacobi", "GMRES+AMG"})
+        {
+          Solvers::LinearSolver::Parameters p;
+          p.type = type;
+          std::vector<std::vector<bool>> modes;
+          DoFTools::extract_constant_modes(disc.dof_handler,
+                                           ComponentMask(3, true),
+                                           modes);
+          const Solvers::LinearSolver solver(p, modes);
+          Vector<double> u(disc.n_dofs()), R(disc.n_dofs()), du(disc.n_dofs());
+          SparseMatrix<double> K(disc.sparsity_pattern);
+          Timer                timer;
+          assembler.assemble(u, 1., R, &K);
+          const double t_assembly = timer.wall_time();
+          R *= -1.;
+          MatrixTools::apply_boundary_values(clamp, K, du, R);
+          timer.restart();
+          const unsigned int its     = solver.solve(K, du, R);
+          const double       t_solve = timer.wall_time();
+          std::cout << std::setw(4) << degree << std::setw(10) << disc.n_dofs()
+                    << std::setw(16) << type << std::fixed
+                    << std::setprecision(3) << std::setw(12) << t_assembly
+                    << std::setw(12) << t_solve << std::defaultfloat
+                    << std::setw(10) << its << "\n";
+        }
+    }
+}
