@@ -141,8 +141,9 @@ main(int argc, char **argv)
                "seconds, "
             << n_threads << " threads\n"
             << std::setw(4) << "P" << std::setw(10) << "dofs" << std::setw(16)
-            << "solver" << std::setw(12) << "assembly" << std::setw(12)
-            << "solve" << std::setw(10) << "lin.its"
+            << "solver" << std::setw(10) << "rel.tol" << std::setw(12)
+            << "assembly" << std::setw(12) << "solve" << std::setw(10)
+            << "lin.its"
             << "\n";
   const Materials::MooneyRivlin mr(5., 1., 50.);
   for (const auto &[degree, n] :
@@ -163,10 +164,17 @@ main(int argc, char **argv)
       for (types::global_dof_index i = 0; i < disc.n_dofs(); ++i)
         if (X[i][2] < 1e-12)
           clamp[i] = 0.;
-      for (const std::string type : {"direct", "GMRES+Jacobi", "GMRES+AMG"})
+      for (const auto &[type, tolerance] :
+           std::vector<std::pair<std::string, double>>{{"direct", 0.},
+                                                       {"GMRES+Jacobi", 0.1},
+                                                       {"GMRES+AMG", 0.1},
+                                                       {"GMRES+Jacobi", 1e-8},
+                                                       {"GMRES+AMG", 1e-8}})
         {
           Solvers::LinearSolver::Parameters p;
-          p.type = type;
+          p.type               = type;
+          p.relative_tolerance = tolerance;
+          p.max_iterations     = 5000;
           std::vector<std::vector<bool>> modes;
           DoFTools::extract_constant_modes(disc.dof_handler,
                                            ComponentMask(3, true),
@@ -183,10 +191,14 @@ main(int argc, char **argv)
           const unsigned int its     = solver.solve(K, du, R);
           const double       t_solve = timer.wall_time();
           std::cout << std::setw(4) << degree << std::setw(10) << disc.n_dofs()
-                    << std::setw(16) << type << std::fixed
-                    << std::setprecision(3) << std::setw(12) << t_assembly
-                    << std::setw(12) << t_solve << std::defaultfloat
-                    << std::setw(10) << its << "\n";
+                    << std::setw(16) << type << std::setw(10)
+                    << (tolerance > 0. ?
+                          (tolerance < 1e-3 ? std::string("1e-8") :
+                                              std::string("0.1")) :
+                          std::string("-"))
+                    << std::fixed << std::setprecision(3) << std::setw(12)
+                    << t_assembly << std::setw(12) << t_solve
+                    << std::defaultfloat << std::setw(10) << its << "\n";
         }
     }
 }
