@@ -33,5 +33,20 @@ namespace TissueContact
       DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
       return points;
     }
+
+
+    std::vector<unsigned int>
+    Discretization::dof_components() const
+    {
+      std::vector<unsigned int>            component(dof_handler.n_dofs());
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int k = 0; k < dofs.size(); ++k)
+            component[dofs[k]] = fe.system_to_component_index(k).first;
+        }
+      return component;
+    }
   } // namespace Elasticity
 } // namespace TissueContact

@@ -52,22 +52,10 @@ check(const unsigned int degree)
 
   // total external force, summed per component, against rho0 g V per body
   // (volumes from the vertices) plus t A (the face x = 1 has area 1)
-  Tensor<1, 3> total;
-  {
-    std::vector<types::global_dof_index> dofs(disc.fe.n_dofs_per_cell());
-    std::vector<bool>                    seen(disc.n_dofs(), false);
-    for (const auto &cell : disc.dof_handler.active_cell_iterators())
-      {
-        cell->get_dof_indices(dofs);
-        for (unsigned int k = 0; k < dofs.size(); ++k)
-          if (!seen[dofs[k]])
-            {
-              seen[dofs[k]] = true;
-              total[disc.fe.system_to_component_index(k).first] +=
-                assembler.external_force()[dofs[k]];
-            }
-      }
-  }
+  Tensor<1, 3>                total;
+  const std::vector<unsigned> component = disc.dof_components();
+  for (types::global_dof_index i = 0; i < disc.n_dofs(); ++i)
+    total[component[i]] += assembler.external_force()[i];
   double mass = 0.;
   for (const auto &cell : tria.active_cell_iterators())
     mass += (cell->material_id() == 0 ? 3. : 1.) *

@@ -49,20 +49,13 @@ namespace
   Vector<double>
   some_displacement(const Elasticity::Discretization &disc)
   {
-    const auto                           X = disc.support_points();
-    Vector<double>                       u(disc.n_dofs());
-    std::vector<types::global_dof_index> dofs(disc.fe.n_dofs_per_cell());
-    for (const auto &cell : disc.dof_handler.active_cell_iterators())
-      {
-        cell->get_dof_indices(dofs);
-        for (unsigned int k = 0; k < dofs.size(); ++k)
-          {
-            const unsigned int c = disc.fe.system_to_component_index(k).first;
-            const Point<3>    &x = X[dofs[k]];
-            u[dofs[k]] = 0.05 * std::sin(3. * x[0] + c) * std::cos(2. * x[1]) +
-                         0.02 * x[2];
-          }
-      }
+    const auto     X         = disc.support_points();
+    const auto     component = disc.dof_components();
+    Vector<double> u(disc.n_dofs());
+    for (types::global_dof_index i = 0; i < disc.n_dofs(); ++i)
+      u[i] =
+        0.05 * std::sin(3. * X[i][0] + component[i]) * std::cos(2. * X[i][1]) +
+        0.02 * X[i][2];
     return u;
   }
 

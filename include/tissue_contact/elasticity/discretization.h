@@ -47,6 +47,10 @@ namespace TissueContact
       /** Reference position of the support point of every DoF. */
       std::vector<Point<3>>
       support_points() const;
+
+      /** The displacement component (0, 1, 2) of every DoF. */
+      std::vector<unsigned int>
+      dof_components() const;
     };
   } // namespace Elasticity
 } // namespace TissueContact
