@@ -1,0 +1,78 @@
+#pragma once
+
+#include <deal.II/base/bounding_box.h>
+#include <functional>
+#include <vector>
+
+namespace TissueContact
+{
+  namespace Contact
+  {
+    using namespace dealii;
+
+    /**
+     * A binary tree of axis-aligned bounding boxes over a set of objects
+     * (tetrahedra, triangles), the broad phase of dissertation sec. 5.4.5:
+     * built top-down by splitting each node's objects at the median of their
+     * box centers along the node's largest extent; refitted bottom-up when
+     * the objects move (the topology is kept, only the boxes grow or
+     * shrink), which is cheaper than a rebuild and exact, though the tree
+     * degrades when the motion is large — rebuild then (per load step).
+     */
+    class BoundingVolumeTree
+    {
+    public:
+      /** Build over @p boxes; object i has box boxes[i]. */
+      explicit BoundingVolumeTree(const std::vector<BoundingBox<3>> &boxes);
+
+      /** New boxes for the same objects: recompute every node's box. */
+      void
+      refit(const std::vector<BoundingBox<3>> &boxes);
+
+      /** Call @p f(i) for every object whose box intersects @p box. */
+      void
+      for_each_overlap(const BoundingBox<3>                    &box,
+                       const std::function<void(unsigned int)> &f) const;
+
+      /**
+       * The smallest value of @p distance(i, cutoff) over all objects, by
+       * branch and bound: subtrees whose box is farther from @p p than the
+       * best value so far are skipped. @p distance must return the exact
+       * distance from @p p to object i (it may return any value >= cutoff
+       * if that distance is >= cutoff).
+       */
+      double
+      nearest(
+        const Point<3>                                    &p,
+        const std::function<double(unsigned int, double)> &distance) const;
+
+      /** Number of tree nodes (2 n_objects - 1). */
+      unsigned int
+      n_nodes() const
+      {
+        return nodes.size();
+      }
+
+    private:
+      struct Node
+      {
+        BoundingBox<3> box;
+        int            left = -1, right = -1; // children, -1 for a leaf
+        unsigned int   object = 0;            // the object of a leaf
+      };
+      std::vector<Node> nodes;
+
+      int
+      build(std::vector<unsigned int>         &objects,
+            const unsigned int                 begin,
+            const unsigned int                 end,
+            const std::vector<BoundingBox<3>> &boxes);
+      void
+      refit(const int node, const std::vector<BoundingBox<3>> &boxes);
+    };
+
+    /** Euclidean distance from @p p to the box @p b (0 inside). */
+    double
+    distance(const Point<3> &p, const BoundingBox<3> &b);
+  } // namespace Contact
+} // namespace TissueContact

@@ -1,0 +1,221 @@
+// Material depth and the bounding-volume tree:
+//  - the depth of a box mesh equals the analytic distance to its faces at
+//    every vertex (exact: the faces are planar), also with only some faces
+//    declared contact surfaces;
+//  - the depth of a ball mesh approaches 1 - |x| at second order in h (the
+//    facets of the discrete sphere sag by O(h^2));
+//  - the tree's nearest query equals brute force;
+//  - the broad phase: the candidate pairs (boundary triangle, tetrahedron)
+//    of the tree equal a brute-force box test, before and after the mesh
+//    moves and the tree is refitted.
+
+#include "../tests.h"
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <set>
+#include <tissue_contact/contact/bounding_volume_tree.h>
+#include <tissue_contact/contact/material_depth.h>
+
+using namespace dealii;
+using namespace TissueContact;
+using namespace TissueContactTests;
+
+namespace
+{
+  void
+  box_depth(const std::set<types::boundary_id> &contact,
+            const std::string                  &name)
+  {
+    Triangulation<3> tria;
+    const Point<3>   lo(0, 0, 0), hi(1, 0.5, 0.25);
+    GridGenerator::subdivided_hyper_rectangle_with_simplices(tria,
+                                                             {8, 4, 2},
+                                                             lo,
+                                                             hi);
+    GridTools::distort_random(0.2, tria, true, 5);
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              if (std::abs(face->center()[d] - lo[d]) < 1e-12)
+                face->set_boundary_id(2 * d);
+              if (std::abs(face->center()[d] - hi[d]) < 1e-12)
+                face->set_boundary_id(2 * d + 1);
+            }
+    const std::vector<double> g =
+      Contact::compute_material_depth(tria, contact);
+    double error = 0., g_max = 0.;
+    for (unsigned int i = 0; i < g.size(); ++i)
+      {
+        const Point<3> &p     = tria.get_vertices()[i];
+        double          exact = 1e300;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            if (contact.count(2 * d))
+              exact = std::min(exact, p[d] - lo[d]);
+            if (contact.count(2 * d + 1))
+              exact = std::min(exact, hi[d] - p[d]);
+          }
+        error = std::max(error, std::abs(g[i] - exact));
+        g_max = std::max(g_max, g[i]);
+      }
+    deallog << "box, contact faces " << name << ": max depth " << g_max
+            << ", max |g - analytic| " << error_bound(error, -14) << std::endl;
+  }
+
+  double
+  ball_depth_error(const unsigned int refinements)
+  {
+    Triangulation<3> hex, tria;
+    GridGenerator::hyper_ball(hex);
+    hex.refine_global(refinements);
+    GridGenerator::convert_hypercube_to_simplex_mesh(hex, tria);
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          face->set_boundary_id(0);
+    const std::vector<double> g = Contact::compute_material_depth(tria, {0});
+    double                    error = 0.;
+    for (unsigned int i = 0; i < g.size(); ++i)
+      if (tria.get_used_vertices()[i])
+        error = std::max(error,
+                         std::abs(g[i] - (1. - tria.get_vertices()[i].norm())));
+    return error;
+  }
+
+  void
+  tree_queries()
+  {
+    // random boxes: nearest distance and overlap queries against brute force
+    std::vector<BoundingBox<3>> boxes;
+    std::vector<Point<3>>       centers;
+    for (unsigned int i = 0; i < 500; ++i)
+      {
+        const Point<3> c(random_value(0, 1),
+                         random_value(0, 1),
+                         random_value(0, 1));
+        const Point<3> h(random_value(0, 0.05),
+                         random_value(0, 0.05),
+                         random_value(0, 0.05));
+        boxes.emplace_back(std::make_pair(Point<3>(c - h), Point<3>(c + h)));
+        centers.push_back(c);
+      }
+    Contact::BoundingVolumeTree tree(boxes);
+    unsigned int                nearest_mismatch = 0, overlap_mismatch = 0;
+    unsigned long               checks = 0, brute = 0;
+    for (unsigned int q = 0; q < 200; ++q)
+      {
+        const Point<3> p(random_value(-0.2, 1.2),
+                         random_value(-0.2, 1.2),
+                         random_value(-0.2, 1.2));
+        double         best = 1e300;
+        for (unsigned int i = 0; i < centers.size(); ++i)
+          best = std::min(best, p.distance(centers[i]));
+        const double found = tree.nearest(p, [&](unsigned int i, double) {
+          ++checks;
+          return p.distance(centers[i]);
+        });
+        nearest_mismatch += (found != best);
+        brute += centers.size();
+
+        const BoundingBox<3> query(
+          std::make_pair(Point<3>(p - Point<3>(0.1, 0.1, 0.1)),
+                         Point<3>(p + Point<3>(0.1, 0.1, 0.1))));
+        std::set<unsigned int> a, b;
+        tree.for_each_overlap(query, [&](unsigned int i) { a.insert(i); });
+        for (unsigned int i = 0; i < boxes.size(); ++i)
+          if (boxes[i].get_neighbor_type(query) != NeighborType::not_neighbors)
+            b.insert(i);
+        overlap_mismatch += (a != b);
+      }
+    deallog << "tree of 500 boxes: nearest mismatches " << nearest_mismatch
+            << ", overlap mismatches " << overlap_mismatch
+            << ", distance evaluations below 20 % of brute force: "
+            << (checks < 0.2 * brute) << std::endl;
+  }
+
+  void
+  broad_phase()
+  {
+    Triangulation<3> tria;
+    GridGenerator::subdivided_hyper_rectangle_with_simplices(tria,
+                                                             {4, 4, 4},
+                                                             Point<3>(0, 0, 0),
+                                                             Point<3>(1, 1, 1));
+    const auto boxes_of = [&](const std::vector<Point<3>> &x) {
+      std::vector<BoundingBox<3>> boxes;
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          std::vector<Point<3>> v;
+          for (const unsigned int i : cell->vertex_indices())
+            v.push_back(x[cell->vertex_index(i)]);
+          boxes.emplace_back(v);
+        }
+      return boxes;
+    };
+    std::vector<std::array<unsigned int, 3>> triangles;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          triangles.push_back({face->vertex_index(0),
+                               face->vertex_index(1),
+                               face->vertex_index(2)});
+
+    std::vector<Point<3>>       x = tria.get_vertices();
+    Contact::BoundingVolumeTree tree(boxes_of(x));
+    for (unsigned int step = 0; step < 2; ++step)
+      {
+        if (step == 1)
+          {
+            // fold the cube: bend the upper half over the lower one
+            for (auto &p : x)
+              p = Point<3>(p[0] + 0.3 * std::sin(3. * p[2]) +
+                             0.02 * random_value(-1, 1),
+                           p[1] + 0.02 * random_value(-1, 1),
+                           p[2] - 0.4 * p[2] * p[2]);
+            tree.refit(boxes_of(x));
+          }
+        const auto    boxes  = boxes_of(x);
+        unsigned long n_tree = 0, n_brute = 0;
+        bool          equal = true;
+        for (const auto &t : triangles)
+          {
+            const BoundingBox<3> tb(
+              std::vector<Point<3>>{x[t[0]], x[t[1]], x[t[2]]});
+            std::set<unsigned int> a, b;
+            tree.for_each_overlap(tb, [&](unsigned int i) { a.insert(i); });
+            for (unsigned int i = 0; i < boxes.size(); ++i)
+              if (boxes[i].get_neighbor_type(tb) != NeighborType::not_neighbors)
+                b.insert(i);
+            n_tree += a.size();
+            n_brute += b.size();
+            equal = equal && (a == b);
+          }
+        deallog << (step == 0 ? "reference mesh" : "moved mesh, refitted tree")
+                << ": " << triangles.size() << " boundary triangles x "
+                << boxes.size() << " tetrahedra, candidate pairs " << n_tree
+                << ", equal to brute force: " << equal << std::endl;
+      }
+  }
+} // namespace
+
+int
+main()
+{
+  initlog();
+  box_depth({0, 1, 2, 3, 4, 5}, "all");
+  box_depth({4, 5}, "z- and z+");
+  box_depth({1}, "x+");
+  const double e1 = ball_depth_error(1), e2 = ball_depth_error(2),
+               e3 = ball_depth_error(3);
+  deallog << "ball: max |g - (1 - |x|)| " << std::setprecision(3) << e1 << ", "
+          << e2 << ", " << e3 << " on three meshes (h halved), ratios "
+          << std::fixed << std::setprecision(1) << e1 / e2 << ", " << e2 / e3
+          << " (second order: 4)" << std::defaultfloat << std::setprecision(6)
+          << std::endl;
+  tree_queries();
+  broad_phase();
+}
