@@ -1,0 +1,292 @@
+// The triangle-tetrahedron penalty kernel over random configurations:
+//  - the intersection area equals an independent estimate (the fraction of
+//    a fine grid of sample points of the triangle inside the tetrahedron);
+//  - the gradient and Hessian (automatic differentiation) equal finite
+//    differences of the energy and of the gradient;
+//  - the Hessian is symmetric, the 7 node forces sum to zero and have no
+//    net torque, the energy is invariant under rigid motions;
+//  - degenerate positions (a triangle vertex on a face, an edge in a face
+//    plane, a triangle in a face plane) give finite values, no NaN.
+
+#include "../tests.h"
+
+#include <tissue_contact/contact/penalty_energy.h>
+
+using namespace dealii;
+using namespace TissueContact;
+using namespace TissueContactTests;
+
+namespace
+{
+  using Tet = std::array<Point<3>, 4>;
+  using Tri = std::array<Point<3>, 3>;
+
+  Point<3>
+  random_point(const double r)
+  {
+    return Point<3>(random_value(-r, r),
+                    random_value(-r, r),
+                    random_value(-r, r));
+  }
+
+  Tet
+  random_tet()
+  {
+    while (true)
+      {
+        Tet          t{random_point(1),
+              random_point(1),
+              random_point(1),
+              random_point(1)};
+        const double v =
+          (t[1] - t[0]) * cross_product_3d(t[2] - t[0], t[3] - t[0]);
+        if (std::abs(v) < 0.3)
+          continue;
+        if (v < 0)
+          std::swap(t[1], t[2]);
+        return t;
+      }
+  }
+
+  std::array<double, 4>
+  random_depths()
+  {
+    return {random_value(0, 0.5),
+            random_value(0, 0.5),
+            random_value(0, 0.5),
+            random_value(0, 0.5)};
+  }
+
+  double
+  energy_of(const std::vector<double> &c, const std::array<double, 4> &g)
+  {
+    Tet tet;
+    Tri tri;
+    for (unsigned v = 0; v < 4; ++v)
+      tet[v] = Point<3>(c[3 * v], c[3 * v + 1], c[3 * v + 2]);
+    for (unsigned v = 0; v < 3; ++v)
+      tri[v] = Point<3>(c[12 + 3 * v], c[13 + 3 * v], c[14 + 3 * v]);
+    return Contact::penalty_energy<double>(tet, tri, g, 10.);
+  }
+
+  Contact::PairDerivatives
+  derivatives_of(const std::vector<double> &c, const std::array<double, 4> &g)
+  {
+    Tet tet;
+    Tri tri;
+    for (unsigned v = 0; v < 4; ++v)
+      tet[v] = Point<3>(c[3 * v], c[3 * v + 1], c[3 * v + 2]);
+    for (unsigned v = 0; v < 3; ++v)
+      tri[v] = Point<3>(c[12 + 3 * v], c[13 + 3 * v], c[14 + 3 * v]);
+    return Contact::penalty_derivatives_ad(tet, tri, g, 10.);
+  }
+
+  std::vector<double>
+  coordinates(const Tet &tet, const Tri &tri)
+  {
+    std::vector<double> c;
+    for (const auto &p : tet)
+      for (unsigned d = 0; d < 3; ++d)
+        c.push_back(p[d]);
+    for (const auto &p : tri)
+      for (unsigned d = 0; d < 3; ++d)
+        c.push_back(p[d]);
+    return c;
+  }
+
+  void
+  area_against_sampling()
+  {
+    double       max_error = 0.;
+    unsigned int n_cut     = 0;
+    const int    n         = 300; // sub-triangles per edge
+    for (unsigned int sample = 0; sample < 100; ++sample)
+      {
+        const Tet    tet  = random_tet();
+        const Tri    tri  = {random_point(1), random_point(1), random_point(1)};
+        const double area = Contact::intersection_area(tet, tri);
+        // centroids of the n^2 congruent sub-triangles, each of area A/n^2
+        const Tensor<1, 3> e1 = (tri[1] - tri[0]) / n,
+                           e2 = (tri[2] - tri[0]) / n;
+        const double A =
+          0.5 * cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]).norm();
+        const auto inside = [&](const Point<3> &p) {
+          const Tensor<1, 3> a = tet[1] - tet[0], b = tet[2] - tet[0],
+                             c = tet[3] - tet[0], r = p - tet[0];
+          const double V  = a * cross_product_3d(b, c);
+          const double l1 = r * cross_product_3d(b, c) / V,
+                       l2 = a * cross_product_3d(r, c) / V,
+                       l3 = a * cross_product_3d(b, r) / V;
+          return l1 >= 0 && l2 >= 0 && l3 >= 0 && l1 + l2 + l3 <= 1;
+        };
+        unsigned long count = 0;
+        for (int i = 0; i < n; ++i)
+          for (int j = 0; i + j < n; ++j)
+            {
+              const Point<3> corner = tri[0] + i * e1 + j * e2;
+              count += inside(corner + (e1 + e2) / 3.);
+              if (i + j < n - 1)
+                count += inside(corner + 2. * (e1 + e2) / 3.);
+            }
+        const double estimate = A * count / (double(n) * n);
+        n_cut += (area > 0.);
+        max_error = std::max(max_error, std::abs(area - estimate) / A);
+      }
+    deallog << "intersection area vs sampling (100 random pairs, " << n_cut
+            << " intersecting): max |difference| / triangle area "
+            << error_bound(max_error, -4) << std::endl;
+  }
+
+  void
+  derivatives_against_fd()
+  {
+    double err_g = 0., err_h = 0., asym = 0., force = 0., torque = 0.,
+           rigid       = 0.;
+    unsigned int n_cut = 0, n_vertices_max = 0;
+    for (unsigned int sample = 0; n_cut < 300; ++sample)
+      {
+        const Tet tet = random_tet();
+        // a triangle through the tetrahedron's neighbourhood
+        const Tri  tri = {random_point(0.8),
+                          random_point(0.8),
+                          random_point(0.8)};
+        const auto g   = random_depths();
+        const auto c   = coordinates(tet, tri);
+        const auto d   = derivatives_of(c, g);
+        if (d.energy <= 0.)
+          continue;
+        ++n_cut;
+        n_vertices_max =
+          std::max(n_vertices_max, Contact::intersect(tet, tri).n_vertices);
+
+        const double       h = 1e-6;
+        Vector<double>     g_fd(21);
+        FullMatrix<double> H_fd(21, 21);
+        for (unsigned int i = 0; i < 21; ++i)
+          {
+            auto cp = c, cm = c;
+            cp[i] += h;
+            cm[i] -= h;
+            g_fd[i]       = (energy_of(cp, g) - energy_of(cm, g)) / (2 * h);
+            const auto dp = derivatives_of(cp, g), dm = derivatives_of(cm, g);
+            for (unsigned int j = 0; j < 21; ++j)
+              H_fd(j, i) = (dp.gradient[j] - dm.gradient[j]) / (2 * h);
+          }
+        Vector<double> dg(d.gradient);
+        dg -= g_fd;
+        err_g = std::max(err_g, dg.l2_norm() / d.gradient.l2_norm());
+        FullMatrix<double> dH(d.hessian);
+        dH.add(-1., H_fd);
+        err_h =
+          std::max(err_h, dH.frobenius_norm() / d.hessian.frobenius_norm());
+        for (unsigned int i = 0; i < 21; ++i)
+          for (unsigned int j = 0; j < 21; ++j)
+            asym = std::max(asym,
+                            std::abs(d.hessian(i, j) - d.hessian(j, i)) /
+                              d.hessian.linfty_norm());
+
+        // balance of the 7 node forces f_a = -dW/dx_a
+        Tensor<1, 3> sum, moment;
+        for (unsigned int a = 0; a < 7; ++a)
+          {
+            const Tensor<1, 3> f({d.gradient[3 * a],
+                                  d.gradient[3 * a + 1],
+                                  d.gradient[3 * a + 2]});
+            const Point<3>     x(c[3 * a], c[3 * a + 1], c[3 * a + 2]);
+            sum += f;
+            moment += cross_product_3d(x, f);
+          }
+        force  = std::max(force, sum.norm() / d.gradient.l2_norm());
+        torque = std::max(torque, moment.norm() / d.gradient.l2_norm());
+
+        // rigid motion of the pair: rotation about a random axis + shift
+        Tensor<1, 3> axis(
+          {random_value(-1, 1), random_value(-1, 1), random_value(-1, 1)});
+        axis /= axis.norm();
+        const double       angle = random_value(0, 6.28);
+        const Tensor<1, 3> shift(
+          {random_value(-5, 5), random_value(-5, 5), random_value(-5, 5)});
+        auto moved = c;
+        for (unsigned int a = 0; a < 7; ++a)
+          {
+            const Tensor<1, 3> x({c[3 * a], c[3 * a + 1], c[3 * a + 2]});
+            const Tensor<1, 3> y = std::cos(angle) * x +
+                                   std::sin(angle) * cross_product_3d(axis, x) +
+                                   (1 - std::cos(angle)) * (axis * x) * axis +
+                                   shift;
+            for (unsigned d2 = 0; d2 < 3; ++d2)
+              moved[3 * a + d2] = y[d2];
+          }
+        rigid =
+          std::max(rigid, std::abs(energy_of(moved, g) - d.energy) / d.energy);
+      }
+    deallog << n_cut << " random intersecting pairs (up to " << n_vertices_max
+            << " polygon vertices):" << std::endl;
+    deallog << "  gradient vs FD of the energy: relative error "
+            << error_bound(err_g, -12) << std::endl;
+    deallog << "  Hessian vs FD of the gradient: relative error "
+            << error_bound(err_h, -12) << std::endl;
+    deallog << "  Hessian asymmetry " << error_bound(asym, -14) << std::endl;
+    deallog << "  sum of the 7 node forces " << error_bound(force, -12)
+            << ", net torque " << error_bound(torque, -12) << std::endl;
+    deallog << "  energy change under a rigid motion "
+            << error_bound(rigid, -12) << std::endl;
+  }
+
+  void
+  degenerate_positions()
+  {
+    const Tet                                      tet   = {Point<3>(0, 0, 0),
+                                                            Point<3>(1, 0, 0),
+                                                            Point<3>(0, 1, 0),
+                                                            Point<3>(0, 0, 1)};
+    const std::array<double, 4>                    g     = {0.3, 0., 0.1, 0.2};
+    const std::vector<std::pair<std::string, Tri>> cases = {
+      {"triangle vertex on a face",
+       {Point<3>(0.2, 0.2, 0.),
+        Point<3>(0.3, 0.2, 0.5),
+        Point<3>(0.2, 0.4, 0.5)}},
+      {"triangle edge in a face plane",
+       {Point<3>(0.1, 0.1, 0.),
+        Point<3>(0.5, 0.2, 0.),
+        Point<3>(0.2, 0.2, 0.6)}},
+      {"triangle in a face plane",
+       {Point<3>(0.1, 0.1, 0.),
+        Point<3>(0.9, 0.1, 0.),
+        Point<3>(0.1, 0.9, 0.)}},
+      {"triangle through a tetrahedron edge",
+       {Point<3>(-0.5, 0., 0.5),
+        Point<3>(0.5, 0., -0.5),
+        Point<3>(0., 1., 0.)}},
+      {"triangle touching a vertex",
+       {Point<3>(0., 0., 1.),
+        Point<3>(0.5, 0.5, 1.5),
+        Point<3>(-0.5, 0.5, 1.5)}}};
+    for (const auto &[name, tri] : cases)
+      {
+        const auto d      = Contact::penalty_derivatives_ad(tet, tri, g, 10.);
+        bool       finite = std::isfinite(d.energy) &&
+                      std::isfinite(d.gradient.l2_norm()) &&
+                      std::isfinite(d.hessian.frobenius_norm());
+        // continuity: the energy of a slightly shifted triangle
+        Tri shifted = tri;
+        for (auto &p : shifted)
+          p[2] += 1e-9;
+        const double jump = std::abs(
+          Contact::penalty_energy<double>(tet, shifted, g, 10.) - d.energy);
+        deallog << name << ": area " << Contact::intersection_area(tet, tri)
+                << ", energy " << d.energy << ", all finite " << finite
+                << ", energy change for a 1e-9 shift " << error_bound(jump, -14)
+                << std::endl;
+      }
+  }
+} // namespace
+
+int
+main()
+{
+  initlog();
+  area_against_sampling();
+  derivatives_against_fd();
+  degenerate_positions();
+}
