@@ -21,47 +21,52 @@ namespace TissueContact
 
 
     PairDerivatives
-    penalty_derivatives_ad(const std::array<Point<3>, 4> &tet,
-                           const std::array<Point<3>, 3> &tri,
-                           const std::array<double, 4>   &g,
-                           const double                   eps_p)
+    differentiate(
+      const std::vector<double>                                    &coordinates,
+      const std::function<ADNumber(const std::vector<ADNumber> &)> &energy)
     {
       using ADHelper = Differentiation::AD::ScalarFunction<
         3,
         Differentiation::AD::NumberTypes::sacado_dfad_dfad,
         double>;
-      using ADNumber = ADHelper::ad_type;
-
-      std::vector<double> coordinates(21);
-      for (unsigned int v = 0; v < 4; ++v)
-        for (unsigned int d = 0; d < 3; ++d)
-          coordinates[3 * v + d] = tet[v][d];
-      for (unsigned int v = 0; v < 3; ++v)
-        for (unsigned int d = 0; d < 3; ++d)
-          coordinates[12 + 3 * v + d] = tri[v][d];
-
-      ADHelper ad(21);
+      const unsigned int n = coordinates.size();
+      ADHelper           ad(n);
       ad.register_independent_variables(coordinates);
-      const std::vector<ADNumber> x = ad.get_sensitive_variables();
-
-      std::array<Point<3, ADNumber>, 4> tet_ad;
-      std::array<Point<3, ADNumber>, 3> tri_ad;
-      for (unsigned int v = 0; v < 4; ++v)
-        for (unsigned int d = 0; d < 3; ++d)
-          tet_ad[v][d] = x[3 * v + d];
-      for (unsigned int v = 0; v < 3; ++v)
-        for (unsigned int d = 0; d < 3; ++d)
-          tri_ad[v][d] = x[12 + 3 * v + d];
-
-      ad.register_dependent_variable(penalty_energy(tet_ad, tri_ad, g, eps_p));
-
+      ad.register_dependent_variable(energy(ad.get_sensitive_variables()));
       PairDerivatives result;
       result.energy = ad.compute_value();
-      result.gradient.reinit(21);
+      result.gradient.reinit(n);
       ad.compute_gradient(result.gradient);
-      result.hessian.reinit(21, 21);
+      result.hessian.reinit(n, n);
       ad.compute_hessian(result.hessian);
       return result;
+    }
+
+
+    PairDerivatives
+    penalty_derivatives_ad(const std::array<Point<3>, 4> &tet,
+                           const std::array<Point<3>, 3> &tri,
+                           const std::array<double, 4>   &g,
+                           const double                   eps_p)
+    {
+      std::vector<double> coordinates;
+      for (const auto &p : tet)
+        for (unsigned int d = 0; d < 3; ++d)
+          coordinates.push_back(p[d]);
+      for (const auto &p : tri)
+        for (unsigned int d = 0; d < 3; ++d)
+          coordinates.push_back(p[d]);
+      return differentiate(coordinates, [&](const std::vector<ADNumber> &x) {
+        std::array<Point<3, ADNumber>, 4> tet_ad;
+        std::array<Point<3, ADNumber>, 3> tri_ad;
+        for (unsigned int v = 0; v < 4; ++v)
+          for (unsigned int d = 0; d < 3; ++d)
+            tet_ad[v][d] = x[3 * v + d];
+        for (unsigned int v = 0; v < 3; ++v)
+          for (unsigned int d = 0; d < 3; ++d)
+            tri_ad[v][d] = x[12 + 3 * v + d];
+        return penalty_energy(tet_ad, tri_ad, g, eps_p);
+      });
     }
   } // namespace Contact
 } // namespace TissueContact

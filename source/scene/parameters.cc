@@ -59,7 +59,7 @@ namespace TissueContact
 
       struct Counts
       {
-        unsigned int bodies = 1, dirichlet = 1, tractions = 0;
+        unsigned int bodies = 1, dirichlet = 1, tractions = 0, obstacles = 0;
       };
 
       void
@@ -82,6 +82,12 @@ namespace TissueContact
                           Patterns::Integer(0, 64),
                           "How many subsections 'Traction 0', ... follow.");
         prm.leave_subsection();
+        prm.enter_subsection("Contact");
+        prm.declare_entry("Number of obstacles",
+                          "0",
+                          Patterns::Integer(0, 64),
+                          "How many subsections 'Obstacle 0', ... follow.");
+        prm.leave_subsection();
       }
 
       Counts
@@ -98,6 +104,9 @@ namespace TissueContact
         prm.enter_subsection("Boundary conditions");
         c.dirichlet = prm.get_integer("Number of Dirichlet conditions");
         c.tractions = prm.get_integer("Number of tractions");
+        prm.leave_subsection();
+        prm.enter_subsection("Contact");
+        c.obstacles = prm.get_integer("Number of obstacles");
         prm.leave_subsection();
         return c;
       }
@@ -321,6 +330,65 @@ namespace TissueContact
 
 
     void
+    ObstacleParameters::declare(ParameterHandler &prm)
+    {
+      prm.declare_entry("Type",
+                        "plane",
+                        Patterns::Selection("plane|sphere"),
+                        "A rigid plane (the bodies stay on the side its "
+                        "Normal points to) or sphere (the bodies stay "
+                        "outside).");
+      prm.declare_entry("Point",
+                        "0, 0, 0",
+                        Patterns::List(Patterns::Double(), 3, 3),
+                        "A point of the plane" + vector_pattern_doc);
+      prm.declare_entry("Normal",
+                        "0, 0, 1",
+                        Patterns::List(Patterns::Double(), 3, 3),
+                        "Normal of the plane, pointing out of the obstacle" +
+                          vector_pattern_doc);
+      prm.declare_entry("Center",
+                        "0, 0, 0",
+                        Patterns::List(Patterns::Double(), 3, 3),
+                        "Center of the sphere" + vector_pattern_doc);
+      prm.declare_entry("Radius",
+                        "1",
+                        Patterns::Double(0.),
+                        "Radius of the sphere.");
+      prm.declare_entry("Penalty factor",
+                        "1000",
+                        Patterns::Double(0.),
+                        "eps_p in W = eps_p/2 int d^2 da over the penetrating "
+                        "part of each contact triangle (d: penetration "
+                        "depth); the penetration falls as 1/eps_p.");
+      prm.declare_entry("Bodies",
+                        "",
+                        Patterns::List(Patterns::Integer(0, 255)),
+                        "Material ids of the bodies the obstacle pushes "
+                        "(empty: all bodies with contact surfaces).");
+    }
+
+
+    void
+    ObstacleParameters::parse(ParameterHandler &prm)
+    {
+      type   = prm.get("Type");
+      point  = Point<3>(parse_vector(prm.get("Point"), "Point"));
+      normal = parse_vector(prm.get("Normal"), "Normal");
+      AssertThrow(normal.norm() > 0.,
+                  ExcMessage("Obstacle: the Normal must not be zero"));
+      normal /= normal.norm();
+      center  = Point<3>(parse_vector(prm.get("Center"), "Center"));
+      radius  = prm.get_double("Radius");
+      penalty = prm.get_double("Penalty factor");
+      bodies.clear();
+      for (const auto &id :
+           Utilities::split_string_list(prm.get("Bodies"), ','))
+        bodies.insert(Utilities::string_to_int(id));
+    }
+
+
+    void
     OutputParameters::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Output");
@@ -364,7 +432,8 @@ namespace TissueContact
     SceneParameters::declare(ParameterHandler  &prm,
                              const unsigned int n_bodies,
                              const unsigned int n_dirichlet,
-                             const unsigned int n_tractions)
+                             const unsigned int n_tractions,
+                             const unsigned int n_obstacles)
     {
       declare_counts(prm);
       MeshParameters::declare(prm);
@@ -409,6 +478,21 @@ namespace TissueContact
                           vector_pattern_doc);
       prm.leave_subsection();
 
+      prm.enter_subsection("Contact");
+      prm.declare_entry("Contact surfaces",
+                        "",
+                        Patterns::List(Patterns::Integer(0, 255)),
+                        "Boundary ids whose faces are contact surfaces (a "
+                        "cut plane with a Dirichlet condition is not). "
+                        "Empty: no contact, and no contact search at all.");
+      for (unsigned int i = 0; i < n_obstacles; ++i)
+        {
+          prm.enter_subsection("Obstacle " + std::to_string(i));
+          ObstacleParameters::declare(prm);
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+
       Solvers::IncrementalNewtonSolver::Parameters::declare(prm);
       OutputParameters::declare(prm);
     }
@@ -450,6 +534,23 @@ namespace TissueContact
       gravity = parse_vector(prm.get("Gravity"), "Gravity");
       prm.leave_subsection();
 
+      prm.enter_subsection("Contact");
+      contact.surfaces.clear();
+      for (const auto &id :
+           Utilities::split_string_list(prm.get("Contact surfaces"), ','))
+        contact.surfaces.insert(Utilities::string_to_int(id));
+      for (unsigned int i = 0; i < contact.obstacles.size(); ++i)
+        {
+          prm.enter_subsection("Obstacle " + std::to_string(i));
+          contact.obstacles[i].parse(prm);
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+      AssertThrow(contact.obstacles.empty() || !contact.surfaces.empty(),
+                  ExcMessage("Contact: obstacles are declared but no "
+                             "Contact surfaces; list the boundary ids that "
+                             "can touch them"));
+
       solver.parse(prm);
       output.parse(prm, dir);
     }
@@ -462,13 +563,18 @@ namespace TissueContact
     {
       const Counts     counts = read_counts(text, name);
       ParameterHandler prm;
-      declare(prm, counts.bodies, counts.dirichlet, counts.tractions);
+      declare(prm,
+              counts.bodies,
+              counts.dirichlet,
+              counts.tractions,
+              counts.obstacles);
       std::istringstream in(text);
       prm.parse_input(in, name);
       SceneParameters p;
       p.bodies.resize(counts.bodies);
       p.dirichlet.resize(counts.dirichlet);
       p.tractions.resize(counts.tractions);
+      p.contact.obstacles.resize(counts.obstacles);
       p.parse(prm, directory);
       return p;
     }

@@ -215,6 +215,15 @@ namespace TissueContact
       for (unsigned int i = 0; i < parameters.tractions.size(); ++i)
         check_boundary(parameters.tractions[i].boundary_id,
                        "Traction " + std::to_string(i));
+      for (const auto id : parameters.contact.surfaces)
+        check_boundary(id, "Contact surfaces");
+      for (unsigned int i = 0; i < parameters.contact.obstacles.size(); ++i)
+        for (const auto id : parameters.contact.obstacles[i].bodies)
+          AssertThrow(mesh_ids.count(id) > 0,
+                      ExcMessage("Obstacle " + std::to_string(i) +
+                                 ": Bodies names material id " +
+                                 std::to_string(id) +
+                                 ", which no cell of the mesh has"));
     }
 
 
@@ -226,6 +235,28 @@ namespace TissueContact
         data[parameters.bodies[i].id] = {materials[i].get(),
                                          parameters.bodies[i].density};
       return data;
+    }
+
+
+    std::vector<Contact::ObstacleContact>
+    Scene::obstacles() const
+    {
+      std::vector<Contact::ObstacleContact> result;
+      for (const auto &o : parameters.contact.obstacles)
+        {
+          Contact::ObstacleContact c;
+          c.obstacle.type   = o.type == "plane" ?
+                                Contact::AnalyticObstacle::Type::plane :
+                                Contact::AnalyticObstacle::Type::sphere;
+          c.obstacle.point  = o.point;
+          c.obstacle.normal = o.normal;
+          c.obstacle.center = o.center;
+          c.obstacle.radius = o.radius;
+          c.penalty         = o.penalty;
+          c.bodies          = o.bodies;
+          result.push_back(c);
+        }
+      return result;
     }
 
 

@@ -16,6 +16,10 @@ namespace TissueContact
     , u(disc.n_dofs())
     , out(out)
   {
+    // contact only where the scene asks for it: no obstacle, no search
+    if (!parameters.contact.obstacles.empty())
+      contact = std::make_unique<Contact::ContactAssembler>(
+        disc, parameters.contact.surfaces, scene.obstacles());
   }
 
 
@@ -25,7 +29,11 @@ namespace TissueContact
                              Vector<double>       &R,
                              SparseMatrix<double> *K)
   {
-    return assembler.assemble(u, load_factor, R, K);
+    if (!assembler.assemble(u, load_factor, R, K))
+      return false;
+    if (contact)
+      contact->assemble(u, R, K);
+    return true;
   }
 
 
@@ -91,6 +99,9 @@ namespace TissueContact
       out << "  body '" << b.name << "' (material id " << int(b.id)
           << "): " << b.model << (b.fiber ? " + fibers" : "") << "\n";
     out << "  linear solver: " << p.solver.linear_solver.type << "\n";
+    if (contact)
+      out << "  contact: " << contact->n_triangles() << " contact triangles, "
+          << p.contact.obstacles.size() << " obstacle(s)\n";
 
     std::filesystem::create_directories(p.output.directory);
     const std::string csv =
@@ -142,6 +153,10 @@ namespace TissueContact
         << "  max |u_i| = " << u_max
         << ", min J = " << assembler.min_jacobian(u) << "\n"
         << "  convergence log: " << csv << "\n";
+    if (contact)
+      out << "  obstacle force on the bodies " << contact->obstacle_force(u)
+          << ", max penetration " << contact->max_obstacle_penetration(u)
+          << "\n";
     if (p.output.write_vtu)
       out << "  results: " << vtu.pvd_file() << " (open in ParaView)\n";
     return statistics;

@@ -60,7 +60,7 @@ namespace TissueContact
                         "Converged when |R| on the free DoFs is below this "
                         "value (for unloaded problems).");
       prm.declare_entry("Maximum line search halvings",
-                        "12",
+                        "20",
                         Patterns::Integer(0),
                         "LOOP 3: halve the Newton step at most this often "
                         "looking for a step with no inverted element and a "

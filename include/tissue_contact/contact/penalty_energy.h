@@ -1,26 +1,74 @@
 #pragma once
 
+#include <deal.II/differentiation/ad/ad_number_traits.h>
+#include <deal.II/differentiation/ad/sacado_number_types.h>
+#include <deal.II/differentiation/ad/sacado_product_types.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
+#include <functional>
 #include <tissue_contact/contact/triangle_tetrahedron_intersection.h>
+#include <vector>
 
 namespace TissueContact
 {
   namespace Contact
   {
     /**
+     * @f$\int_P g^2\,da@f$ over a planar convex polygon P with vertices
+     * @p x and values @p G of a function g that is linear on P: fan P
+     * into triangles; on one with area A and corner values
+     * @f$G_1, G_2, G_3@f$ the integral is exactly
+     * @f$\frac{A}{6}(G_1^2 + G_2^2 + G_3^2 + G_1G_2 + G_2G_3 + G_3G_1)@f$.
+     * Fan triangles with @f$|n|^2 \le@f$ @p tiny (n the doubled area
+     * vector) are skipped: their contribution vanishes, and the derivative
+     * of @f$|n|@f$ at @f$n = 0@f$ would not be finite.
+     */
+    template <typename Number, std::size_t N>
+    Number
+    integral_of_square(const std::array<Point<3, Number>, N> &x,
+                       const std::array<Number, N>           &G,
+                       const unsigned int                     n_vertices,
+                       const double                           tiny)
+    {
+      using Traits = Differentiation::AD::ADNumberTraits<Number>;
+      Number integral(0.);
+      for (unsigned int k = 1; k + 1 < n_vertices; ++k)
+        {
+          const Tensor<1, 3, Number> n =
+            cross_product_3d(x[k] - x[0], x[k + 1] - x[0]);
+          const Number n2 = n.norm_square();
+          if (!(Traits::get_scalar_value(n2) > tiny))
+            continue;
+          integral += std::sqrt(n2) / 12. *
+                      (G[0] * G[0] + G[k] * G[k] + G[k + 1] * G[k + 1] +
+                       G[0] * G[k] + G[k] * G[k + 1] + G[k + 1] * G[0]);
+        }
+      return integral;
+    }
+
+    /** The zero-area threshold of integral_of_square() for a triangle:
+     * @f$(10^{-14} L^2)^2@f$ with L its longest edge. */
+    template <typename Number>
+    double
+    zero_area_threshold(const std::array<Point<3, Number>, 3> &tri)
+    {
+      using Traits = Differentiation::AD::ADNumberTraits<Number>;
+      double L2    = 0.;
+      for (unsigned int k = 0; k < 3; ++k)
+        L2 = std::max(L2,
+                      Traits::get_scalar_value(
+                        (tri[(k + 1) % 3] - tri[k]).norm_square()));
+      return 1e-28 * L2 * L2;
+    }
+
+    /**
      * The penalty energy of one triangle-tetrahedron pair (dissertation
      * 5.4.6, paper 5.3; doc/theory/05-contact.md, sec. 3):
      * @f[ W = \frac{\varepsilon_p}{2}\int_{T\cap K} g^2\,da, \qquad
      *     g(x) = \sum_{j=0}^{3} \lambda_j(x)\, g_j, @f]
      * with the material depths @f$g_j@f$ of the tetrahedron's vertices and
-     * the current positions. The polygon @f$T\cap K@f$ is fanned into
-     * triangles; g is linear on each, so with its corner values
-     * @f$G_1, G_2, G_3@f$ and area A the integral is exact:
-     * @f$W = \varepsilon_p\frac{A}{12}(G_1^2 + G_2^2 + G_3^2 + G_1G_2 +
-     * G_2G_3 + G_3G_1)@f$. Fan triangles of (numerically) zero area are
-     * skipped: their contribution vanishes, and the derivative of
-     * @f$|n|@f$ at @f$n = 0@f$ would not be finite.
+     * the current positions; g is linear on the polygon @f$T\cap K@f$, so
+     * integral_of_square() is exact.
      */
     template <typename Number>
     Number
@@ -29,41 +77,23 @@ namespace TissueContact
                    const std::array<double, 4>           &g,
                    const double                           eps_p)
     {
-      using Traits = Differentiation::AD::ADNumberTraits<Number>;
       const IntersectionPolygon<Number> polygon = intersect(tet, tri);
-      Number                            W(0.);
       if (polygon.n_vertices < 3)
-        return W;
-
-      // zero-area threshold from the triangle's size
-      double L2 = 0.;
-      for (unsigned int k = 0; k < 3; ++k)
-        L2 = std::max(L2,
-                      Traits::get_scalar_value(
-                        (tri[(k + 1) % 3] - tri[k]).norm_square()));
-      const double tiny = 1e-28 * L2 * L2;
-
-      std::array<Number, 8> G;
+        return Number(0.);
+      std::array<Point<3, Number>, 8> x;
+      std::array<Number, 8>           G;
       for (unsigned int k = 0; k < polygon.n_vertices; ++k)
         {
+          x[k] = polygon.vertex[k].x;
           G[k] = Number(0.);
           for (unsigned int j = 0; j < 4; ++j)
             G[k] += polygon.vertex[k].lambda[j] * g[j];
         }
-      const auto &x = polygon.vertex;
-      for (unsigned int k = 1; k + 1 < polygon.n_vertices; ++k)
-        {
-          const Tensor<1, 3, Number> n =
-            cross_product_3d(x[k].x - x[0].x, x[k + 1].x - x[0].x);
-          const Number n2 = n.norm_square();
-          if (!(Traits::get_scalar_value(n2) > tiny))
-            continue;
-          const Number A = 0.5 * std::sqrt(n2);
-          W += eps_p * A / 12. *
-               (G[0] * G[0] + G[k] * G[k] + G[k + 1] * G[k + 1] + G[0] * G[k] +
-                G[k] * G[k + 1] + G[k + 1] * G[0]);
-        }
-      return W;
+      return 0.5 * eps_p *
+             integral_of_square(x,
+                                G,
+                                polygon.n_vertices,
+                                zero_area_threshold(tri));
     }
 
     /** Area of the intersection of the triangle with the tetrahedron. */
@@ -84,6 +114,19 @@ namespace TissueContact
       Vector<double>     gradient;
       FullMatrix<double> hessian;
     };
+
+    /** The number type of the reference derivatives: Sacado forward mode
+     * over forward mode, exact first and second derivatives. */
+    using ADNumber = Differentiation::AD::NumberTraits<
+      double,
+      Differentiation::AD::NumberTypes::sacado_dfad_dfad>::ad_type;
+
+    /** Value, gradient and Hessian of @p energy at @p coordinates by
+     * automatic differentiation (deal.II's Differentiation::AD helper). */
+    PairDerivatives
+    differentiate(
+      const std::vector<double>                                    &coordinates,
+      const std::function<ADNumber(const std::vector<ADNumber> &)> &energy);
 
     PairDerivatives
     penalty_derivatives_ad(const std::array<Point<3>, 4> &tet,

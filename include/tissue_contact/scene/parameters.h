@@ -80,6 +80,31 @@ namespace TissueContact
       parse(ParameterHandler &prm);
     };
 
+    /** prm subsection "Contact/Obstacle N": a rigid plane or sphere. */
+    struct ObstacleParameters
+    {
+      std::string                  type = "plane";
+      Point<3>                     point;
+      Tensor<1, 3>                 normal{{0., 0., 1.}};
+      Point<3>                     center;
+      double                       radius  = 1.;
+      double                       penalty = 1e3;
+      std::set<types::material_id> bodies;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    /** prm subsection "Contact": which boundary ids are contact surfaces,
+     * and the obstacles. */
+    struct ContactParameters
+    {
+      std::set<types::boundary_id>    surfaces;
+      std::vector<ObstacleParameters> obstacles;
+    };
+
     /** prm subsection "Output". */
     struct OutputParameters
     {
@@ -108,6 +133,7 @@ namespace TissueContact
       std::vector<DirichletParameters>             dirichlet;
       std::vector<TractionParameters>              tractions;
       Tensor<1, 3>                                 gravity;
+      ContactParameters                            contact;
       Solvers::IncrementalNewtonSolver::Parameters solver;
       OutputParameters                             output;
 
@@ -116,7 +142,8 @@ namespace TissueContact
       declare(ParameterHandler  &prm,
               const unsigned int n_bodies    = 1,
               const unsigned int n_dirichlet = 1,
-              const unsigned int n_tractions = 1);
+              const unsigned int n_tractions = 1,
+              const unsigned int n_obstacles = 1);
 
       /** Read a prm file. Relative paths in it are taken relative to the
        * file's folder. */

@@ -2,6 +2,7 @@
 
 #include <deal.II/grid/tria.h>
 #include <memory>
+#include <tissue_contact/contact/contact_assembler.h>
 #include <tissue_contact/elasticity/discretization.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/materials/material.h>
@@ -40,6 +41,10 @@ namespace TissueContact
       /** Per material id: the material (null for rigid bodies) and density. */
       std::map<types::material_id, Elasticity::BodyData>
       body_data() const;
+
+      /** The rigid obstacles of the Contact subsection. */
+      std::vector<Contact::ObstacleContact>
+      obstacles() const;
 
       /** Gravity and tractions at load factor 1. */
       Elasticity::DeadLoads

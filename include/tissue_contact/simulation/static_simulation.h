@@ -1,7 +1,9 @@
 #pragma once
 
 #include <deal.II/base/timer.h>
+#include <memory>
 #include <ostream>
+#include <tissue_contact/contact/contact_assembler.h>
 #include <tissue_contact/elasticity/discretization.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/scene/scene.h>
@@ -54,6 +56,12 @@ namespace TissueContact
     {
       return scene;
     }
+    /** The contact assembler, or null if the scene declares no contact. */
+    const Contact::ContactAssembler *
+    contact_assembler() const
+    {
+      return contact.get();
+    }
 
     // NonlinearProblem
     types::global_dof_index
@@ -81,11 +89,12 @@ namespace TissueContact
     constant_modes() const override;
 
   private:
-    Scene::Scene                      scene;
-    Elasticity::Discretization        disc;
-    Elasticity::ElasticAssembler      assembler;
-    std::vector<Scene::PrescribedDof> prescribed;
-    Vector<double>                    u;
-    std::ostream                     &out;
+    Scene::Scene                               scene;
+    Elasticity::Discretization                 disc;
+    Elasticity::ElasticAssembler               assembler;
+    std::unique_ptr<Contact::ContactAssembler> contact;
+    std::vector<Scene::PrescribedDof>          prescribed;
+    Vector<double>                             u;
+    std::ostream                              &out;
   };
 } // namespace TissueContact

@@ -66,7 +66,7 @@ namespace TissueContact
         unsigned int max_iterations      = 25;
         double       residual_tolerance  = 1e-8;
         double       absolute_tolerance  = 1e-12;
-        unsigned int max_halvings        = 12;
+        unsigned int max_halvings        = 20;
         bool         quasi_viscosity     = false;
         double       viscosity_factor    = 0.1;
         double       viscosity_time_step = 1.;

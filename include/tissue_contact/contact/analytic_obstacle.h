@@ -1,0 +1,101 @@
+#pragma once
+
+#include <cmath>
+#include <deal.II/base/point.h>
+#include <tissue_contact/contact/penalty_energy.h>
+
+namespace TissueContact
+{
+  namespace Contact
+  {
+    /**
+     * A rigid obstacle with an analytic penetration depth d(x)
+     * (dissertation 5.2; doc/theory/05-contact.md, sec. 5):
+     * - a plane through @p point with unit normal @p normal pointing out of
+     *   the obstacle (the bodies stay on that side):
+     *   @f$d = -(x - p)\cdot n@f$;
+     * - a sphere with @p center and @p radius (the bodies stay outside):
+     *   @f$d = R - |x - c|@f$.
+     * d > 0 inside the obstacle.
+     */
+    struct AnalyticObstacle
+    {
+      enum class Type
+      {
+        plane,
+        sphere
+      };
+      Type         type = Type::plane;
+      Point<3>     point;
+      Tensor<1, 3> normal{{0., 0., 1.}};
+      Point<3>     center;
+      double       radius = 1.;
+
+      template <typename Number>
+      Number
+      penetration(const Point<3, Number> &x) const
+      {
+        if (type == Type::plane)
+          {
+            Number d(0.);
+            for (unsigned int i = 0; i < 3; ++i)
+              d -= (x[i] - point[i]) * normal[i];
+            return d;
+          }
+        Number r2(0.);
+        for (unsigned int i = 0; i < 3; ++i)
+          r2 += (x[i] - center[i]) * (x[i] - center[i]);
+        return radius - std::sqrt(r2);
+      }
+    };
+
+    /**
+     * The penalty energy of a boundary triangle against an obstacle,
+     * @f$W = \frac{\varepsilon_p}{2}\int_{T,\,d_h>0} d_h^2\,da@f$, with
+     * @f$d_h@f$ the linear interpolant of the vertex penetrations (exact for
+     * the plane, second-order accurate for the sphere): the triangle is
+     * clipped by @f$d_h \ge 0@f$ and integral_of_square() integrates.
+     */
+    template <typename Number>
+    Number
+    obstacle_energy(const AnalyticObstacle                &obstacle,
+                    const std::array<Point<3, Number>, 3> &tri,
+                    const double                           eps_p)
+    {
+      using Traits = Differentiation::AD::ADNumberTraits<Number>;
+      std::array<Point<3, Number>, 4> x;
+      std::array<Number, 4>           d;
+      unsigned int                    n = 0;
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          const Point<3, Number> &p = tri[k], &q = tri[(k + 1) % 3];
+          const Number            dp = obstacle.penetration(p),
+                       dq            = obstacle.penetration(q);
+          const bool p_in            = Traits::get_scalar_value(dp) >= 0.;
+          const bool q_in            = Traits::get_scalar_value(dq) >= 0.;
+          if (p_in)
+            {
+              x[n]   = p;
+              d[n++] = dp;
+            }
+          if (p_in != q_in)
+            {
+              const Number t = dp / (dp - dq);
+              x[n]           = p + t * (q - p);
+              d[n++]         = Number(0.);
+            }
+        }
+      if (n < 3)
+        return Number(0.);
+      return 0.5 * eps_p *
+             integral_of_square(x, d, n, zero_area_threshold(tri));
+    }
+
+    /** obstacle_energy() with its gradient and Hessian with respect to the
+     * 9 triangle vertex coordinates (automatic differentiation). */
+    PairDerivatives
+    obstacle_derivatives_ad(const AnalyticObstacle        &obstacle,
+                            const std::array<Point<3>, 3> &tri,
+                            const double                   eps_p);
+  } // namespace Contact
+} // namespace TissueContact
