@@ -1,4 +1,7 @@
+#include <algorithm>
+#include <cmath>
 #include <tissue_contact/contact/contact_assembler.h>
+#include <tissue_contact/contact/material_depth.h>
 
 namespace TissueContact
 {
@@ -7,8 +10,10 @@ namespace TissueContact
     ContactAssembler::ContactAssembler(
       const Elasticity::Discretization   &disc,
       const std::set<types::boundary_id> &contact_surfaces,
-      const std::vector<ObstacleContact> &obstacles)
+      const std::vector<ObstacleContact> &obstacles,
+      const std::vector<BodyContact>     &pairs)
       : obstacles(obstacles)
+      , pairs(pairs)
     {
       const auto &tria = disc.dof_handler.get_triangulation();
       X                = tria.get_vertices();
@@ -29,6 +34,98 @@ namespace TissueContact
                 triangle_body.push_back(cell->material_id());
               }
         }
+
+      if (pairs.empty())
+        return;
+      // material depth, and a tree over the tetrahedra of the volume bodies
+      depth = compute_material_depth(tria, contact_surfaces);
+      std::set<types::material_id> volume_bodies;
+      for (const auto &p : pairs)
+        volume_bodies.insert(p.volume_body);
+      for (const auto &cell : tria.active_cell_iterators())
+        if (volume_bodies.count(cell->material_id()) > 0)
+          {
+            tets.push_back({cell->vertex_index(0),
+                            cell->vertex_index(1),
+                            cell->vertex_index(2),
+                            cell->vertex_index(3)});
+            tet_body.push_back(cell->material_id());
+            for (const unsigned int v : tets.back())
+              AssertThrow(std::isfinite(depth[v]),
+                          ExcMessage("Contact: body with material id " +
+                                     std::to_string(cell->material_id()) +
+                                     " is the volume body of a pair but has "
+                                     "no contact surface: its material depth "
+                                     "is undefined"));
+          }
+      std::vector<BoundingBox<3>> boxes;
+      for (const auto &t : tets)
+        boxes.emplace_back(
+          std::vector<Point<3>>{X[t[0]], X[t[1]], X[t[2]], X[t[3]]});
+      tree = std::make_unique<BoundingVolumeTree>(boxes);
+    }
+
+
+    void
+    ContactAssembler::refit(const std::vector<Point<3>> &x) const
+    {
+      std::vector<BoundingBox<3>> boxes;
+      boxes.reserve(tets.size());
+      for (const auto &t : tets)
+        boxes.emplace_back(
+          std::vector<Point<3>>{x[t[0]], x[t[1]], x[t[2]], x[t[3]]});
+      tree->refit(boxes);
+    }
+
+
+    template <typename F>
+    void
+    ContactAssembler::for_each_candidate(const std::vector<Point<3>> &x,
+                                         const double                 margin,
+                                         const F                     &f) const
+    {
+      for (unsigned int t = 0; t < triangles.size(); ++t)
+        {
+          const auto &tv                = triangles[t];
+          bool        surface_of_a_pair = false;
+          for (const auto &p : pairs)
+            surface_of_a_pair =
+              surface_of_a_pair || p.surface_body == triangle_body[t];
+          if (!surface_of_a_pair)
+            continue;
+          BoundingBox<3> box(
+            std::vector<Point<3>>{x[tv[0]], x[tv[1]], x[tv[2]]});
+          if (margin > 0.)
+            box.extend(margin);
+          tree->for_each_overlap(box, [&](const unsigned int k) {
+            const auto &kv = tets[k];
+            // a triangle that is a face of the tetrahedron
+            unsigned int shared = 0;
+            for (const unsigned int a : tv)
+              shared += std::count(kv.begin(), kv.end(), a);
+            if (shared == 3)
+              return;
+            for (const auto &p : pairs)
+              if (p.surface_body == triangle_body[t] &&
+                  p.volume_body == tet_body[k])
+                f(t, k, p);
+          });
+        }
+    }
+
+
+    std::array<types::global_dof_index, 21>
+    ContactAssembler::pair_dofs(const unsigned int t,
+                                const unsigned int k) const
+    {
+      std::array<types::global_dof_index, 21> dofs;
+      for (unsigned int a = 0; a < 4; ++a)
+        for (unsigned int c = 0; c < 3; ++c)
+          dofs[3 * a + c] = vertex_dofs[tets[k][a]][c];
+      for (unsigned int a = 0; a < 3; ++a)
+        for (unsigned int c = 0; c < 3; ++c)
+          dofs[12 + 3 * a + c] = vertex_dofs[triangles[t][a]][c];
+      return dofs;
     }
 
 
@@ -94,6 +191,143 @@ namespace TissueContact
                                                  d.hessian(i, j));
                                     }
                                 });
+
+      for_each_pair_contact(u,
+                            [&](const unsigned int     t,
+                                const unsigned int     k,
+                                const PairDerivatives &d) {
+                              const auto dofs = pair_dofs(t, k);
+                              for (unsigned int i = 0; i < 21; ++i)
+                                {
+                                  R[dofs[i]] += d.gradient[i];
+                                  if (K != nullptr)
+                                    for (unsigned int j = 0; j < 21; ++j)
+                                      K->add(dofs[i], dofs[j], d.hessian(i, j));
+                                }
+                            });
+    }
+
+
+    std::vector<Point<3>>
+    ContactAssembler::positions(const Vector<double> &u) const
+    {
+      std::vector<Point<3>> x(X.size());
+      for (unsigned int v = 0; v < X.size(); ++v)
+        x[v] = position(v, u);
+      return x;
+    }
+
+
+    template <typename F>
+    void
+    ContactAssembler::for_each_pair_contact(const Vector<double> &u,
+                                            const F              &f) const
+    {
+      if (pairs.empty())
+        return;
+      const std::vector<Point<3>> x = positions(u);
+      refit(x);
+      for_each_candidate(
+        x,
+        0.,
+        [&](const unsigned int t, const unsigned int k, const BodyContact &p) {
+          const std::array<Point<3>, 4> tet = {x[tets[k][0]],
+                                               x[tets[k][1]],
+                                               x[tets[k][2]],
+                                               x[tets[k][3]]};
+          const std::array<Point<3>, 3> tri = {x[triangles[t][0]],
+                                               x[triangles[t][1]],
+                                               x[triangles[t][2]]};
+          const std::array<double, 4>   g   = {depth[tets[k][0]],
+                                               depth[tets[k][1]],
+                                               depth[tets[k][2]],
+                                               depth[tets[k][3]]};
+          // cheap rejection before differentiating: zero energy has zero
+          // gradient (the energy is nonnegative)
+          if (*std::max_element(g.begin(), g.end()) <= 0. ||
+              penalty_energy<double>(tet, tri, g, p.penalty) <= 0.)
+            return;
+          f(t, k, penalty_derivatives_ad(tet, tri, g, p.penalty));
+        });
+    }
+
+
+    void
+    ContactAssembler::add_couplings(const Vector<double>   &u,
+                                    const double            margin,
+                                    DynamicSparsityPattern &dsp) const
+    {
+      if (pairs.empty())
+        return;
+      const std::vector<Point<3>> x = positions(u);
+      refit(x);
+      for_each_candidate(x,
+                         margin,
+                         [&](const unsigned int t,
+                             const unsigned int k,
+                             const BodyContact &) {
+                           const auto dofs = pair_dofs(t, k);
+                           for (const auto i : dofs)
+                             for (const auto j : dofs)
+                               dsp.add(i, j);
+                         });
+    }
+
+
+    bool
+    ContactAssembler::has_couplings(const Vector<double>  &u,
+                                    const SparsityPattern &pattern) const
+    {
+      if (pairs.empty())
+        return true;
+      const std::vector<Point<3>> x = positions(u);
+      refit(x);
+      bool all = true;
+      for_each_candidate(x,
+                         0.,
+                         [&](const unsigned int t,
+                             const unsigned int k,
+                             const BodyContact &) {
+                           if (!all)
+                             return;
+                           const auto dofs = pair_dofs(t, k);
+                           for (const auto i : dofs)
+                             for (const auto j : dofs)
+                               all = all && pattern.exists(i, j);
+                         });
+      return all;
+    }
+
+
+    double
+    ContactAssembler::max_body_penetration(const Vector<double> &u) const
+    {
+      if (pairs.empty())
+        return 0.;
+      const std::vector<Point<3>> x = positions(u);
+      refit(x);
+      double d_max = 0.;
+      for_each_candidate(
+        x,
+        0.,
+        [&](const unsigned int t, const unsigned int k, const BodyContact &) {
+          const std::array<Point<3>, 4> tet = {x[tets[k][0]],
+                                               x[tets[k][1]],
+                                               x[tets[k][2]],
+                                               x[tets[k][3]]};
+          for (const unsigned int v : triangles[t])
+            {
+              const std::array<Point<3>, 3> point   = {x[v], x[v], x[v]};
+              const auto                    polygon = intersect(tet, point);
+              if (polygon.n_vertices == 0)
+                continue;
+              double g = 0.;
+              for (unsigned int j = 0; j < 4; ++j)
+                g += polygon.vertex[0].lambda[j] * depth[tets[k][j]];
+              d_max = std::max(d_max, g);
+            }
+        });
+      return d_max;
     }
 
 
@@ -109,6 +343,26 @@ namespace TissueContact
           for (const auto &o : obstacles)
             if (o.bodies.empty() || o.bodies.count(triangle_body[t]) > 0)
               W += obstacle_energy<double>(o.obstacle, tri, o.penalty);
+        }
+      if (!pairs.empty())
+        {
+          const std::vector<Point<3>> x = positions(u);
+          refit(x);
+          for_each_candidate(
+            x,
+            0.,
+            [&](const unsigned int t,
+                const unsigned int k,
+                const BodyContact &p) {
+              W += penalty_energy<double>(
+                {x[tets[k][0]], x[tets[k][1]], x[tets[k][2]], x[tets[k][3]]},
+                {x[triangles[t][0]], x[triangles[t][1]], x[triangles[t][2]]},
+                {depth[tets[k][0]],
+                 depth[tets[k][1]],
+                 depth[tets[k][2]],
+                 depth[tets[k][3]]},
+                p.penalty);
+            });
         }
       return W;
     }

@@ -59,7 +59,8 @@ namespace TissueContact
 
       struct Counts
       {
-        unsigned int bodies = 1, dirichlet = 1, tractions = 0, obstacles = 0;
+        unsigned int bodies = 1, dirichlet = 1, tractions = 0, obstacles = 0,
+                     pairs = 0;
       };
 
       void
@@ -87,6 +88,10 @@ namespace TissueContact
                           "0",
                           Patterns::Integer(0, 64),
                           "How many subsections 'Obstacle 0', ... follow.");
+        prm.declare_entry("Number of pairs",
+                          "0",
+                          Patterns::Integer(0, 64),
+                          "How many subsections 'Pair 0', ... follow.");
         prm.leave_subsection();
       }
 
@@ -107,6 +112,7 @@ namespace TissueContact
         prm.leave_subsection();
         prm.enter_subsection("Contact");
         c.obstacles = prm.get_integer("Number of obstacles");
+        c.pairs     = prm.get_integer("Number of pairs");
         prm.leave_subsection();
         return c;
       }
@@ -389,6 +395,39 @@ namespace TissueContact
 
 
     void
+    ContactPairParameters::declare(ParameterHandler &prm)
+    {
+      prm.declare_entry("Surface body",
+                        "0",
+                        Patterns::Integer(0, 255),
+                        "Material id of the body whose contact triangles "
+                        "are pushed out of the other body.");
+      prm.declare_entry("Volume body",
+                        "0",
+                        Patterns::Integer(0, 255),
+                        "Material id of the body whose tetrahedra and "
+                        "material depth push; equal to Surface body for "
+                        "self-contact. Declare both directions for two "
+                        "bodies.");
+      prm.declare_entry("Penalty factor",
+                        "1000",
+                        Patterns::Double(0.),
+                        "eps_p in W = eps_p/2 int g^2 da over every "
+                        "triangle-tetrahedron intersection (g: the material "
+                        "depth of the volume body).");
+    }
+
+
+    void
+    ContactPairParameters::parse(ParameterHandler &prm)
+    {
+      surface_body = prm.get_integer("Surface body");
+      volume_body  = prm.get_integer("Volume body");
+      penalty      = prm.get_double("Penalty factor");
+    }
+
+
+    void
     OutputParameters::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Output");
@@ -433,7 +472,8 @@ namespace TissueContact
                              const unsigned int n_bodies,
                              const unsigned int n_dirichlet,
                              const unsigned int n_tractions,
-                             const unsigned int n_obstacles)
+                             const unsigned int n_obstacles,
+                             const unsigned int n_pairs)
     {
       declare_counts(prm);
       MeshParameters::declare(prm);
@@ -491,6 +531,12 @@ namespace TissueContact
           ObstacleParameters::declare(prm);
           prm.leave_subsection();
         }
+      for (unsigned int i = 0; i < n_pairs; ++i)
+        {
+          prm.enter_subsection("Pair " + std::to_string(i));
+          ContactPairParameters::declare(prm);
+          prm.leave_subsection();
+        }
       prm.leave_subsection();
 
       Solvers::IncrementalNewtonSolver::Parameters::declare(prm);
@@ -545,11 +591,18 @@ namespace TissueContact
           contact.obstacles[i].parse(prm);
           prm.leave_subsection();
         }
+      for (unsigned int i = 0; i < contact.pairs.size(); ++i)
+        {
+          prm.enter_subsection("Pair " + std::to_string(i));
+          contact.pairs[i].parse(prm);
+          prm.leave_subsection();
+        }
       prm.leave_subsection();
-      AssertThrow(contact.obstacles.empty() || !contact.surfaces.empty(),
-                  ExcMessage("Contact: obstacles are declared but no "
+      AssertThrow((contact.obstacles.empty() && contact.pairs.empty()) ||
+                    !contact.surfaces.empty(),
+                  ExcMessage("Contact: obstacles or pairs are declared but no "
                              "Contact surfaces; list the boundary ids that "
-                             "can touch them"));
+                             "can touch"));
 
       solver.parse(prm);
       output.parse(prm, dir);
@@ -567,7 +620,8 @@ namespace TissueContact
               counts.bodies,
               counts.dirichlet,
               counts.tractions,
-              counts.obstacles);
+              counts.obstacles,
+              counts.pairs);
       std::istringstream in(text);
       prm.parse_input(in, name);
       SceneParameters p;
@@ -575,6 +629,7 @@ namespace TissueContact
       p.dirichlet.resize(counts.dirichlet);
       p.tractions.resize(counts.tractions);
       p.contact.obstacles.resize(counts.obstacles);
+      p.contact.pairs.resize(counts.pairs);
       p.parse(prm, directory);
       return p;
     }

@@ -217,6 +217,13 @@ namespace TissueContact
                        "Traction " + std::to_string(i));
       for (const auto id : parameters.contact.surfaces)
         check_boundary(id, "Contact surfaces");
+      for (unsigned int i = 0; i < parameters.contact.pairs.size(); ++i)
+        for (const auto id : {parameters.contact.pairs[i].surface_body,
+                              parameters.contact.pairs[i].volume_body})
+          AssertThrow(mesh_ids.count(id) > 0,
+                      ExcMessage("Contact pair " + std::to_string(i) +
+                                 " names material id " + std::to_string(id) +
+                                 ", which no cell of the mesh has"));
       for (unsigned int i = 0; i < parameters.contact.obstacles.size(); ++i)
         for (const auto id : parameters.contact.obstacles[i].bodies)
           AssertThrow(mesh_ids.count(id) > 0,
@@ -235,6 +242,16 @@ namespace TissueContact
         data[parameters.bodies[i].id] = {materials[i].get(),
                                          parameters.bodies[i].density};
       return data;
+    }
+
+
+    std::vector<Contact::BodyContact>
+    Scene::body_contacts() const
+    {
+      std::vector<Contact::BodyContact> result;
+      for (const auto &p : parameters.contact.pairs)
+        result.push_back({p.surface_body, p.volume_body, p.penalty});
+      return result;
     }
 
 

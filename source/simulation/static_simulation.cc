@@ -1,4 +1,6 @@
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <filesystem>
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/output/convergence_log.h>
@@ -16,10 +18,43 @@ namespace TissueContact
     , u(disc.n_dofs())
     , out(out)
   {
-    // contact only where the scene asks for it: no obstacle, no search
-    if (!parameters.contact.obstacles.empty())
-      contact = std::make_unique<Contact::ContactAssembler>(
-        disc, parameters.contact.surfaces, scene.obstacles());
+    // contact only where the scene asks for it: no obstacle and no pair,
+    // no contact search
+    if (!parameters.contact.obstacles.empty() ||
+        !parameters.contact.pairs.empty())
+      contact =
+        std::make_unique<Contact::ContactAssembler>(disc,
+                                                    parameters.contact.surfaces,
+                                                    scene.obstacles(),
+                                                    scene.body_contacts());
+    rebuild_sparsity_pattern(u);
+  }
+
+
+  void
+  StaticSimulation::rebuild_sparsity_pattern(const Vector<double> &u)
+  {
+    if (!contact || scene.parameters.contact.pairs.empty())
+      {
+        sparsity.copy_from(disc.sparsity_pattern);
+        return;
+      }
+    DynamicSparsityPattern dsp(disc.n_dofs());
+    DoFTools::make_sparsity_pattern(disc.dof_handler, dsp);
+    contact->add_couplings(
+      u, 0.5 * GridTools::minimal_cell_diameter(scene.triangulation), dsp);
+    sparsity.copy_from(dsp);
+  }
+
+
+  bool
+  StaticSimulation::update_sparsity_pattern(const Vector<double> &u)
+  {
+    if (!contact || scene.parameters.contact.pairs.empty() ||
+        contact->has_couplings(u, sparsity))
+      return false;
+    rebuild_sparsity_pattern(u);
+    return true;
   }
 
 
@@ -101,7 +136,8 @@ namespace TissueContact
     out << "  linear solver: " << p.solver.linear_solver.type << "\n";
     if (contact)
       out << "  contact: " << contact->n_triangles() << " contact triangles, "
-          << p.contact.obstacles.size() << " obstacle(s)\n";
+          << p.contact.obstacles.size() << " obstacle(s), "
+          << p.contact.pairs.size() << " body pair(s)\n";
 
     std::filesystem::create_directories(p.output.directory);
     const std::string csv =
@@ -153,10 +189,14 @@ namespace TissueContact
         << "  max |u_i| = " << u_max
         << ", min J = " << assembler.min_jacobian(u) << "\n"
         << "  convergence log: " << csv << "\n";
-    if (contact)
+    if (contact && !p.contact.obstacles.empty())
       out << "  obstacle force on the bodies " << contact->obstacle_force(u)
           << ", max penetration " << contact->max_obstacle_penetration(u)
           << "\n";
+    if (contact && !p.contact.pairs.empty())
+      out << "  largest material depth reached by a contact vertex in "
+             "another body: "
+          << contact->max_body_penetration(u) << "\n";
     if (p.output.write_vtu)
       out << "  results: " << vtu.pvd_file() << " (open in ParaView)\n";
     return statistics;

@@ -177,7 +177,9 @@ namespace TissueContact
           bool valid;
           {
             const auto scope = section("assembly");
-            valid            = problem.assemble(u, load_factor, R, &K);
+            if (problem.update_sparsity_pattern(u))
+              K.reinit(problem.sparsity_pattern());
+            valid = problem.assemble(u, load_factor, R, &K);
           }
           if (!valid)
             return "an element is inverted at the start of the Newton "

@@ -1,10 +1,13 @@
 #pragma once
 
 #include <array>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
+#include <memory>
 #include <set>
 #include <tissue_contact/contact/analytic_obstacle.h>
+#include <tissue_contact/contact/bounding_volume_tree.h>
 #include <tissue_contact/elasticity/discretization.h>
 #include <vector>
 
@@ -19,6 +22,14 @@ namespace TissueContact
       AnalyticObstacle             obstacle;
       double                       penalty = 1.;
       std::set<types::material_id> bodies;
+    };
+
+    /** The contact triangles of @p surface_body against the tetrahedra of
+     * @p volume_body (the same body for self-contact), with a penalty. */
+    struct BodyContact
+    {
+      types::material_id surface_body = 0, volume_body = 0;
+      double             penalty = 1.;
     };
 
     /**
@@ -37,7 +48,34 @@ namespace TissueContact
     public:
       ContactAssembler(const Elasticity::Discretization   &disc,
                        const std::set<types::boundary_id> &contact_surfaces,
-                       const std::vector<ObstacleContact> &obstacles);
+                       const std::vector<ObstacleContact> &obstacles,
+                       const std::vector<BodyContact>     &pairs = {});
+
+      /** Add to @p dsp the DoF couplings of every (triangle, tetrahedron)
+       * candidate of the body pairs at @p u whose boxes overlap after the
+       * triangle's box is enlarged by @p margin. */
+      void
+      add_couplings(const Vector<double>   &u,
+                    const double            margin,
+                    DynamicSparsityPattern &dsp) const;
+
+      /** Whether @p pattern holds the couplings of every candidate pair at
+       * @p u (else the matrix pattern must grow before assembly). */
+      bool
+      has_couplings(const Vector<double>  &u,
+                    const SparsityPattern &pattern) const;
+
+      /** Material depth at every vertex. */
+      const std::vector<double> &
+      vertex_depth() const
+      {
+        return depth;
+      }
+
+      /** Largest material depth reached by a vertex of a contact triangle
+       * inside a tetrahedron of a paired body (the penetration). */
+      double
+      max_body_penetration(const Vector<double> &u) const;
 
       /** Add the contact residual and, if @p K is not null, tangent. */
       void
@@ -71,6 +109,39 @@ namespace TissueContact
       std::vector<ObstacleContact>             obstacles;
       std::vector<Point<3>>                    X; // reference positions
       std::vector<std::array<types::global_dof_index, 3>> vertex_dofs;
+
+      std::vector<BodyContact>                    pairs;
+      std::vector<double>                         depth; // per vertex
+      std::vector<std::array<unsigned int, 4>>    tets;  // vertex indices
+      std::vector<types::material_id>             tet_body;
+      mutable std::unique_ptr<BoundingVolumeTree> tree; // over tets
+
+      /** Refit the tree to the positions @p x of the vertices. */
+      void
+      refit(const std::vector<Point<3>> &x) const;
+
+      /** Call @p f(t, k, pair) for every candidate pair of triangle t and
+       * tetrahedron k of a body pair (boxes overlapping after enlarging
+       * the triangle's by @p margin), triangles that are faces of the
+       * tetrahedron excluded. */
+      template <typename F>
+      void
+      for_each_candidate(const std::vector<Point<3>> &x,
+                         const double                 margin,
+                         const F                     &f) const;
+
+      std::array<types::global_dof_index, 21>
+      pair_dofs(const unsigned int t, const unsigned int k) const;
+
+      /** Current positions of all vertices. */
+      std::vector<Point<3>>
+      positions(const Vector<double> &u) const;
+
+      /** Call @p f(t, k, derivatives) for every intersecting pair of a
+       * contact triangle t and a tetrahedron k with nonzero energy. */
+      template <typename F>
+      void
+      for_each_pair_contact(const Vector<double> &u, const F &f) const;
 
       Point<3>
       position(const unsigned int v, const Vector<double> &u) const;

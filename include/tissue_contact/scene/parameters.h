@@ -97,12 +97,26 @@ namespace TissueContact
       parse(ParameterHandler &prm);
     };
 
+    /** prm subsection "Contact/Pair N": the contact triangles of one body
+     * against the tetrahedra of another (or the same: self-contact). */
+    struct ContactPairParameters
+    {
+      types::material_id surface_body = 0, volume_body = 0;
+      double             penalty = 1e3;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
     /** prm subsection "Contact": which boundary ids are contact surfaces,
-     * and the obstacles. */
+     * the body pairs and the obstacles. */
     struct ContactParameters
     {
-      std::set<types::boundary_id>    surfaces;
-      std::vector<ObstacleParameters> obstacles;
+      std::set<types::boundary_id>       surfaces;
+      std::vector<ContactPairParameters> pairs;
+      std::vector<ObstacleParameters>    obstacles;
     };
 
     /** prm subsection "Output". */
@@ -143,7 +157,8 @@ namespace TissueContact
               const unsigned int n_bodies    = 1,
               const unsigned int n_dirichlet = 1,
               const unsigned int n_tractions = 1,
-              const unsigned int n_obstacles = 1);
+              const unsigned int n_obstacles = 1,
+              const unsigned int n_pairs     = 1);
 
       /** Read a prm file. Relative paths in it are taken relative to the
        * file's folder. */

@@ -42,6 +42,10 @@ namespace TissueContact
       std::map<types::material_id, Elasticity::BodyData>
       body_data() const;
 
+      /** The body pairs of the Contact subsection. */
+      std::vector<Contact::BodyContact>
+      body_contacts() const;
+
       /** The rigid obstacles of the Contact subsection. */
       std::vector<Contact::ObstacleContact>
       obstacles() const;

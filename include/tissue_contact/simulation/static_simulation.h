@@ -69,11 +69,15 @@ namespace TissueContact
     {
       return disc.n_dofs();
     }
+    /** The finite element pattern, plus the couplings of current contact
+     * pairs. */
     const SparsityPattern &
     sparsity_pattern() const override
     {
-      return disc.sparsity_pattern;
+      return sparsity;
     }
+    bool
+    update_sparsity_pattern(const Vector<double> &u) override;
     bool
     assemble(const Vector<double> &u,
              const double          load_factor,
@@ -89,10 +93,17 @@ namespace TissueContact
     constant_modes() const override;
 
   private:
+    /** sparsity = the FE pattern + the contact couplings at @p u (with a
+     * margin of half the smallest cell diameter, so that nearby pairs do
+     * not force a rebuild at every iteration). */
+    void
+    rebuild_sparsity_pattern(const Vector<double> &u);
+
     Scene::Scene                               scene;
     Elasticity::Discretization                 disc;
     Elasticity::ElasticAssembler               assembler;
     std::unique_ptr<Contact::ContactAssembler> contact;
+    SparsityPattern                            sparsity;
     std::vector<Scene::PrescribedDof>          prescribed;
     Vector<double>                             u;
     std::ostream                              &out;

@@ -31,6 +31,19 @@ namespace TissueContact
       virtual const SparsityPattern &
       sparsity_pattern() const = 0;
 
+      /**
+       * Called before each assembly of the tangent at @p u: make
+       * sparsity_pattern() hold every coupling that tangent will have (new
+       * contact pairs couple nodes of different elements). Returns true if
+       * the pattern changed; the solver then re-initializes its matrix.
+       */
+      virtual bool
+      update_sparsity_pattern(const Vector<double> &u)
+      {
+        (void)u;
+        return false;
+      }
+
       /** @f$R(u,\lambda)@f$ (all DoFs, prescribed ones included) and the
        * tangent when @p K is not null. Returns false if @p u is not
        * admissible (an inverted element); R and K are then unspecified. */
