@@ -142,7 +142,8 @@ namespace TissueContact
     template <typename F>
     void
     ContactAssembler::for_each_obstacle_contact(const Vector<double> &u,
-                                                const F              &f) const
+                                                const bool with_hessian,
+                                                const F   &f) const
     {
       for (unsigned int t = 0; t < triangles.size(); ++t)
         {
@@ -160,7 +161,8 @@ namespace TissueContact
                 f(t,
                   tri,
                   o,
-                  obstacle_derivatives_ad(o.obstacle, tri, o.penalty));
+                  obstacle_derivatives_ad(
+                    o.obstacle, tri, o.penalty, with_hessian));
             }
         }
     }
@@ -172,6 +174,7 @@ namespace TissueContact
                                SparseMatrix<double> *K) const
     {
       for_each_obstacle_contact(u,
+                                K != nullptr,
                                 [&](const unsigned int t,
                                     const std::array<Point<3>, 3> &,
                                     const ObstacleContact &,
@@ -193,6 +196,7 @@ namespace TissueContact
                                 });
 
       for_each_pair_contact(u,
+                            K != nullptr,
                             [&](const unsigned int     t,
                                 const unsigned int     k,
                                 const PairDerivatives &d) {
@@ -221,6 +225,7 @@ namespace TissueContact
     template <typename F>
     void
     ContactAssembler::for_each_pair_contact(const Vector<double> &u,
+                                            const bool            with_hessian,
                                             const F              &f) const
     {
       if (pairs.empty())
@@ -247,7 +252,7 @@ namespace TissueContact
           if (*std::max_element(g.begin(), g.end()) <= 0. ||
               penalty_energy<double>(tet, tri, g, p.penalty) <= 0.)
             return;
-          f(t, k, penalty_derivatives_ad(tet, tri, g, p.penalty));
+          f(t, k, penalty_derivatives_ad(tet, tri, g, p.penalty, with_hessian));
         });
     }
 
@@ -373,6 +378,7 @@ namespace TissueContact
     {
       Tensor<1, 3> force;
       for_each_obstacle_contact(u,
+                                false,
                                 [&](const unsigned int,
                                     const std::array<Point<3>, 3> &,
                                     const ObstacleContact &,

@@ -44,10 +44,32 @@ namespace TissueContact
 
 
     PairDerivatives
+    differentiate_once(
+      const std::vector<double> &coordinates,
+      const std::function<ADNumber1(const std::vector<ADNumber1> &)> &energy)
+    {
+      using ADHelper = Differentiation::AD::ScalarFunction<
+        3,
+        Differentiation::AD::NumberTypes::sacado_dfad,
+        double>;
+      const unsigned int n = coordinates.size();
+      ADHelper           ad(n);
+      ad.register_independent_variables(coordinates);
+      ad.register_dependent_variable(energy(ad.get_sensitive_variables()));
+      PairDerivatives result;
+      result.energy = ad.compute_value();
+      result.gradient.reinit(n);
+      ad.compute_gradient(result.gradient);
+      return result;
+    }
+
+
+    PairDerivatives
     penalty_derivatives_ad(const std::array<Point<3>, 4> &tet,
                            const std::array<Point<3>, 3> &tri,
                            const std::array<double, 4>   &g,
-                           const double                   eps_p)
+                           const double                   eps_p,
+                           const bool                     with_hessian)
     {
       std::vector<double> coordinates;
       for (const auto &p : tet)
@@ -56,9 +78,10 @@ namespace TissueContact
       for (const auto &p : tri)
         for (unsigned int d = 0; d < 3; ++d)
           coordinates.push_back(p[d]);
-      return differentiate(coordinates, [&](const std::vector<ADNumber> &x) {
-        std::array<Point<3, ADNumber>, 4> tet_ad;
-        std::array<Point<3, ADNumber>, 3> tri_ad;
+      const auto energy = [&](const auto &x) {
+        using Number = typename std::decay_t<decltype(x)>::value_type;
+        std::array<Point<3, Number>, 4> tet_ad;
+        std::array<Point<3, Number>, 3> tri_ad;
         for (unsigned int v = 0; v < 4; ++v)
           for (unsigned int d = 0; d < 3; ++d)
             tet_ad[v][d] = x[3 * v + d];
@@ -66,7 +89,10 @@ namespace TissueContact
           for (unsigned int d = 0; d < 3; ++d)
             tri_ad[v][d] = x[12 + 3 * v + d];
         return penalty_energy(tet_ad, tri_ad, g, eps_p);
-      });
+      };
+      if (with_hessian)
+        return differentiate(coordinates, energy);
+      return differentiate_once(coordinates, energy);
     }
   } // namespace Contact
 } // namespace TissueContact

@@ -96,6 +96,7 @@ namespace TissueContact
     PairDerivatives
     obstacle_derivatives_ad(const AnalyticObstacle        &obstacle,
                             const std::array<Point<3>, 3> &tri,
-                            const double                   eps_p);
+                            const double                   eps_p,
+                            const bool                     with_hessian = true);
   } // namespace Contact
 } // namespace TissueContact

@@ -141,7 +141,9 @@ namespace TissueContact
        * contact triangle t and a tetrahedron k with nonzero energy. */
       template <typename F>
       void
-      for_each_pair_contact(const Vector<double> &u, const F &f) const;
+      for_each_pair_contact(const Vector<double> &u,
+                            const bool            with_hessian,
+                            const F              &f) const;
 
       Point<3>
       position(const unsigned int v, const Vector<double> &u) const;
@@ -150,7 +152,9 @@ namespace TissueContact
        * obstacle in contact. */
       template <typename F>
       void
-      for_each_obstacle_contact(const Vector<double> &u, const F &f) const;
+      for_each_obstacle_contact(const Vector<double> &u,
+                                const bool            with_hessian,
+                                const F              &f) const;
     };
   } // namespace Contact
 } // namespace TissueContact

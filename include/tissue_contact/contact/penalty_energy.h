@@ -128,10 +128,23 @@ namespace TissueContact
       const std::vector<double>                                    &coordinates,
       const std::function<ADNumber(const std::vector<ADNumber> &)> &energy);
 
+    /** First-order AD number: gradients only (the residual). */
+    using ADNumber1 = Differentiation::AD::NumberTraits<
+      double,
+      Differentiation::AD::NumberTypes::sacado_dfad>::ad_type;
+
+    /** Value and gradient only (hessian left empty), by first-order AD:
+     * about n times cheaper than differentiate() for n coordinates. */
+    PairDerivatives
+    differentiate_once(
+      const std::vector<double> &coordinates,
+      const std::function<ADNumber1(const std::vector<ADNumber1> &)> &energy);
+
     PairDerivatives
     penalty_derivatives_ad(const std::array<Point<3>, 4> &tet,
                            const std::array<Point<3>, 3> &tri,
                            const std::array<double, 4>   &g,
-                           const double                   eps_p);
+                           const double                   eps_p,
+                           const bool                     with_hessian = true);
   } // namespace Contact
 } // namespace TissueContact

@@ -1,0 +1,127 @@
+// Two stacked blocks with non-matching meshes (meshes/stacked_blocks.geo),
+// the lower one clamped at its bottom, the upper one pressed down by a
+// traction p on its top (which is held in x and y), in contact through
+// both directions (upper triangles against lower tetrahedra and vice
+// versa). For penalty factors 1e3 and 1e4: the contact force carried from
+// the upper to the lower block equals the load, and the penetration falls
+// as 1/eps (two directions, each with pressure eps d: p = 2 eps d).
+
+#include "../tests.h"
+
+#include <sstream>
+#include <tissue_contact/simulation/static_simulation.h>
+
+using namespace dealii;
+using namespace TissueContact;
+using namespace TissueContactTests;
+
+namespace
+{
+  std::string
+  scene(const std::string &eps)
+  {
+    return std::string(R"(
+subsection Mesh
+  set Source = file
+  set File   = )") +
+           SOURCE_DIR + R"(/stacked_blocks.msh
+end
+subsection Bodies
+  set Number of bodies = 2
+  subsection Body 0
+    set Material id = 1
+    set Mu          = 100
+    set Lambda      = 100
+  end
+  subsection Body 1
+    set Material id = 2
+    set Mu          = 100
+    set Lambda      = 100
+  end
+end
+subsection Boundary conditions
+  set Number of Dirichlet conditions = 2
+  set Number of tractions = 1
+  subsection Dirichlet 0
+    set Boundary id = 1
+  end
+  subsection Dirichlet 1
+    set Boundary id = 2
+    set Components  = xy
+  end
+  subsection Traction 0
+    set Boundary id = 2
+    set Traction    = 0, 0, -10
+  end
+end
+subsection Contact
+  set Contact surfaces = 3, 4
+  set Number of pairs  = 2
+  subsection Pair 0
+    set Surface body   = 2
+    set Volume body    = 1
+    set Penalty factor = )" +
+           eps + R"(
+  end
+  subsection Pair 1
+    set Surface body   = 1
+    set Volume body    = 2
+    set Penalty factor = )" +
+           eps + R"(
+  end
+end
+subsection Newton
+  set Quasi-viscosity = true
+  set Maximum line search halvings = 25
+end
+subsection Output
+  set Write VTU    = false
+  set Print timing = false
+  set Directory    = .
+end
+)";
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+  const double load = 10.;
+  for (const std::string eps : {"1e3", "1e4"})
+    {
+      std::ostringstream log;
+      StaticSimulation   sim(Scene::SceneParameters::from_string(scene(eps)),
+                           log);
+      const auto         stats = sim.run();
+      const auto        &u     = sim.solution();
+      const auto        *c     = sim.contact_assembler();
+
+      // contact force on the upper block: -dW/du summed over its DoFs
+      Vector<double> R(u.size());
+      c->assemble(u, R, nullptr);
+      const auto                          &disc      = sim.discretization();
+      const auto                           component = disc.dof_components();
+      std::vector<bool>                    upper(u.size(), false);
+      std::vector<types::global_dof_index> dofs(disc.fe.n_dofs_per_cell());
+      for (const auto &cell : disc.dof_handler.active_cell_iterators())
+        if (cell->material_id() == 2)
+          {
+            cell->get_dof_indices(dofs);
+            for (const auto i : dofs)
+              upper[i] = true;
+          }
+      Tensor<1, 3> F;
+      for (types::global_dof_index i = 0; i < u.size(); ++i)
+        if (upper[i])
+          F[component[i]] -= R[i];
+      const double d = c->max_body_penetration(u);
+      deallog << "eps = " << eps << ": contact force on the upper block / load "
+              << std::setprecision(4) << F[2] / load << std::setprecision(6)
+              << ", max penetration " << std::setprecision(3) << d
+              << ", eps * penetration / p " << std::stod(eps) * d / load
+              << std::setprecision(6) << ", Newton iterations "
+              << stats.newton_iterations << std::endl;
+    }
+}
