@@ -249,10 +249,21 @@ namespace TissueContact
                                                depth[tets[k][3]]};
           // cheap rejection before differentiating: zero energy has zero
           // gradient (the energy is nonnegative)
-          if (*std::max_element(g.begin(), g.end()) <= 0. ||
-              penalty_energy<double>(tet, tri, g, p.penalty) <= 0.)
+          if (*std::max_element(g.begin(), g.end()) <= 0.)
             return;
-          f(t, k, penalty_derivatives_ad(tet, tri, g, p.penalty, with_hessian));
+          if (p.point_collocation)
+            {
+              if (collocation_energy<double>(tet, tri, g, p.penalty) > 0.)
+                f(t,
+                  k,
+                  collocation_derivatives_ad(
+                    tet, tri, g, p.penalty, with_hessian));
+              return;
+            }
+          if (penalty_energy<double>(tet, tri, g, p.penalty) > 0.)
+            f(t,
+              k,
+              penalty_derivatives_ad(tet, tri, g, p.penalty, with_hessian));
         });
     }
 
@@ -359,14 +370,20 @@ namespace TissueContact
             [&](const unsigned int t,
                 const unsigned int k,
                 const BodyContact &p) {
-              W += penalty_energy<double>(
-                {x[tets[k][0]], x[tets[k][1]], x[tets[k][2]], x[tets[k][3]]},
-                {x[triangles[t][0]], x[triangles[t][1]], x[triangles[t][2]]},
-                {depth[tets[k][0]],
-                 depth[tets[k][1]],
-                 depth[tets[k][2]],
-                 depth[tets[k][3]]},
-                p.penalty);
+              const std::array<Point<3>, 4> tet = {x[tets[k][0]],
+                                                   x[tets[k][1]],
+                                                   x[tets[k][2]],
+                                                   x[tets[k][3]]};
+              const std::array<Point<3>, 3> tri = {x[triangles[t][0]],
+                                                   x[triangles[t][1]],
+                                                   x[triangles[t][2]]};
+              const std::array<double, 4>   g   = {depth[tets[k][0]],
+                                                   depth[tets[k][1]],
+                                                   depth[tets[k][2]],
+                                                   depth[tets[k][3]]};
+              W += p.point_collocation ?
+                     collocation_energy<double>(tet, tri, g, p.penalty) :
+                     penalty_energy<double>(tet, tri, g, p.penalty);
             });
         }
       return W;

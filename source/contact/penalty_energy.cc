@@ -71,28 +71,10 @@ namespace TissueContact
                            const double                   eps_p,
                            const bool                     with_hessian)
     {
-      std::vector<double> coordinates;
-      for (const auto &p : tet)
-        for (unsigned int d = 0; d < 3; ++d)
-          coordinates.push_back(p[d]);
-      for (const auto &p : tri)
-        for (unsigned int d = 0; d < 3; ++d)
-          coordinates.push_back(p[d]);
-      const auto energy = [&](const auto &x) {
-        using Number = typename std::decay_t<decltype(x)>::value_type;
-        std::array<Point<3, Number>, 4> tet_ad;
-        std::array<Point<3, Number>, 3> tri_ad;
-        for (unsigned int v = 0; v < 4; ++v)
-          for (unsigned int d = 0; d < 3; ++d)
-            tet_ad[v][d] = x[3 * v + d];
-        for (unsigned int v = 0; v < 3; ++v)
-          for (unsigned int d = 0; d < 3; ++d)
-            tri_ad[v][d] = x[12 + 3 * v + d];
-        return penalty_energy(tet_ad, tri_ad, g, eps_p);
-      };
-      if (with_hessian)
-        return differentiate(coordinates, energy);
-      return differentiate_once(coordinates, energy);
+      return differentiate_pair(
+        tet, tri, with_hessian, [&](const auto &tet_ad, const auto &tri_ad) {
+          return penalty_energy(tet_ad, tri_ad, g, eps_p);
+        });
     }
   } // namespace Contact
 } // namespace TissueContact

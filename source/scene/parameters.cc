@@ -415,15 +415,25 @@ namespace TissueContact
                         "eps_p in W = eps_p/2 int g^2 da over every "
                         "triangle-tetrahedron intersection (g: the material "
                         "depth of the volume body).");
+      prm.declare_entry("Method",
+                        "area integration",
+                        Patterns::Selection(
+                          "area integration|point collocation"),
+                        "area integration: the penalty integrated exactly over "
+                        "every triangle-tetrahedron intersection (continuous "
+                        "forces); point collocation: sampled at the triangle "
+                        "vertices only (dissertation 5.3.5, the baseline "
+                        "that chatters).");
     }
 
 
     void
     ContactPairParameters::parse(ParameterHandler &prm)
     {
-      surface_body = prm.get_integer("Surface body");
-      volume_body  = prm.get_integer("Volume body");
-      penalty      = prm.get_double("Penalty factor");
+      surface_body      = prm.get_integer("Surface body");
+      volume_body       = prm.get_integer("Volume body");
+      penalty           = prm.get_double("Penalty factor");
+      point_collocation = prm.get("Method") == "point collocation";
     }
 
 

@@ -250,7 +250,8 @@ namespace TissueContact
     {
       std::vector<Contact::BodyContact> result;
       for (const auto &p : parameters.contact.pairs)
-        result.push_back({p.surface_body, p.volume_body, p.penalty});
+        result.push_back(
+          {p.surface_body, p.volume_body, p.penalty, p.point_collocation});
       return result;
     }
 

@@ -5,8 +5,10 @@
 //    differences of the energy and of the gradient;
 //  - the Hessian is symmetric, the 7 node forces sum to zero and have no
 //    net torque, the energy is invariant under rigid motions;
-//  - degenerate positions (a triangle vertex on a face, an edge in a face
-//    plane, a triangle in a face plane) give finite values, no NaN.
+//  - degenerate positions (a triangle vertex on a face shared by two
+//    tetrahedra, an edge or the whole triangle in it, through an edge,
+//    touching a vertex) give finite values, no NaN, and a continuous
+//    energy of the pair of tetrahedra.
 
 #include "../tests.h"
 
@@ -236,21 +238,25 @@ namespace
   void
   degenerate_positions()
   {
-    const Tet                                      tet   = {Point<3>(0, 0, 0),
-                                                            Point<3>(1, 0, 0),
-                                                            Point<3>(0, 1, 0),
-                                                            Point<3>(0, 0, 1)};
-    const std::array<double, 4>                    g     = {0.3, 0., 0.1, 0.2};
+    // a tetrahedron and its mirror image through the face z = 0, with equal
+    // depths on the shared face: a triangle on that face is owned by
+    // exactly one of the two, so the sum is what must be continuous
+    const Point<3> A(0, 0, 0), B(1, 0, 0), C(0, 1, 0);
+    const std::array<std::pair<Tet, std::array<double, 4>>, 2> tets = {
+      std::make_pair(Tet{A, B, C, Point<3>(0, 0, 1)},
+                     std::array<double, 4>{0.3, 0., 0.1, 0.2}),
+      std::make_pair(Tet{A, C, B, Point<3>(0, 0, -1)},
+                     std::array<double, 4>{0.3, 0.1, 0., 0.25})};
     const std::vector<std::pair<std::string, Tri>> cases = {
-      {"triangle vertex on a face",
+      {"triangle vertex on the shared face",
        {Point<3>(0.2, 0.2, 0.),
         Point<3>(0.3, 0.2, 0.5),
         Point<3>(0.2, 0.4, 0.5)}},
-      {"triangle edge in a face plane",
+      {"triangle edge in the shared face",
        {Point<3>(0.1, 0.1, 0.),
         Point<3>(0.5, 0.2, 0.),
         Point<3>(0.2, 0.2, 0.6)}},
-      {"triangle in a face plane",
+      {"triangle in the shared face",
        {Point<3>(0.1, 0.1, 0.),
         Point<3>(0.9, 0.1, 0.),
         Point<3>(0.1, 0.9, 0.)}},
@@ -264,20 +270,35 @@ namespace
         Point<3>(-0.5, 0.5, 1.5)}}};
     for (const auto &[name, tri] : cases)
       {
-        const auto d      = Contact::penalty_derivatives_ad(tet, tri, g, 10.);
-        bool       finite = std::isfinite(d.energy) &&
-                      std::isfinite(d.gradient.l2_norm()) &&
-                      std::isfinite(d.hessian.frobenius_norm());
-        // continuity: the energy of a slightly shifted triangle
-        Tri shifted = tri;
-        for (auto &p : shifted)
-          p[2] += 1e-9;
-        const double jump = std::abs(
-          Contact::penalty_energy<double>(tet, shifted, g, 10.) - d.energy);
-        deallog << name << ": area " << Contact::intersection_area(tet, tri)
-                << ", energy " << d.energy << ", all finite " << finite
-                << ", energy change for a 1e-9 shift " << error_bound(jump, -14)
-                << std::endl;
+        double energy = 0., area = 0., jump = 0.;
+        bool   finite = true;
+        for (const double shift : {1e-9, -1e-9})
+          {
+            Tri shifted = tri;
+            for (auto &p : shifted)
+              p[2] += shift;
+            double shifted_energy = 0.;
+            for (const auto &[tet, g] : tets)
+              shifted_energy +=
+                Contact::penalty_energy<double>(tet, shifted, g, 10.);
+            energy = 0.;
+            area   = 0.;
+            for (const auto &[tet, g] : tets)
+              {
+                const auto d =
+                  Contact::penalty_derivatives_ad(tet, tri, g, 10.);
+                finite = finite && std::isfinite(d.energy) &&
+                         std::isfinite(d.gradient.l2_norm()) &&
+                         std::isfinite(d.hessian.frobenius_norm());
+                energy += d.energy;
+                area += Contact::intersection_area(tet, tri);
+              }
+            jump = std::max(jump, std::abs(shifted_energy - energy));
+          }
+        deallog << name << ": area " << area << ", energy " << energy
+                << ", all finite " << finite
+                << ", energy change for a +-1e-9 shift "
+                << error_bound(jump, -14) << std::endl;
       }
   }
 } // namespace

@@ -8,6 +8,7 @@
 #include <set>
 #include <tissue_contact/contact/analytic_obstacle.h>
 #include <tissue_contact/contact/bounding_volume_tree.h>
+#include <tissue_contact/contact/point_collocation.h>
 #include <tissue_contact/elasticity/discretization.h>
 #include <vector>
 
@@ -30,6 +31,8 @@ namespace TissueContact
     {
       types::material_id surface_body = 0, volume_body = 0;
       double             penalty = 1.;
+      /** The point-collocation baseline instead of area integration. */
+      bool point_collocation = false;
     };
 
     /**

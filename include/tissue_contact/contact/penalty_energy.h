@@ -19,16 +19,16 @@ namespace TissueContact
      * into triangles; on one with area A and corner values
      * @f$G_1, G_2, G_3@f$ the integral is exactly
      * @f$\frac{A}{6}(G_1^2 + G_2^2 + G_3^2 + G_1G_2 + G_2G_3 + G_3G_1)@f$.
-     * Fan triangles with @f$|n|^2 \le@f$ @p tiny (n the doubled area
-     * vector) are skipped: their contribution vanishes, and the derivative
-     * of @f$|n|@f$ at @f$n = 0@f$ would not be finite.
+     * Fan triangles of exactly zero area are skipped (the derivative of
+     * @f$|n|@f$ at @f$n = 0@f$ is not finite); slivers are kept: their area
+     * vanishes but their one-sided derivative does not, and neighbouring
+     * tetrahedra need it to add up to the derivative of the total.
      */
     template <typename Number, std::size_t N>
     Number
     integral_of_square(const std::array<Point<3, Number>, N> &x,
                        const std::array<Number, N>           &G,
-                       const unsigned int                     n_vertices,
-                       const double                           tiny)
+                       const unsigned int                     n_vertices)
     {
       using Traits = Differentiation::AD::ADNumberTraits<Number>;
       Number integral(0.);
@@ -37,28 +37,13 @@ namespace TissueContact
           const Tensor<1, 3, Number> n =
             cross_product_3d(x[k] - x[0], x[k + 1] - x[0]);
           const Number n2 = n.norm_square();
-          if (!(Traits::get_scalar_value(n2) > tiny))
+          if (!(Traits::get_scalar_value(n2) > 0.))
             continue;
           integral += std::sqrt(n2) / 12. *
                       (G[0] * G[0] + G[k] * G[k] + G[k + 1] * G[k + 1] +
                        G[0] * G[k] + G[k] * G[k + 1] + G[k + 1] * G[0]);
         }
       return integral;
-    }
-
-    /** The zero-area threshold of integral_of_square() for a triangle:
-     * @f$(10^{-14} L^2)^2@f$ with L its longest edge. */
-    template <typename Number>
-    double
-    zero_area_threshold(const std::array<Point<3, Number>, 3> &tri)
-    {
-      using Traits = Differentiation::AD::ADNumberTraits<Number>;
-      double L2    = 0.;
-      for (unsigned int k = 0; k < 3; ++k)
-        L2 = std::max(L2,
-                      Traits::get_scalar_value(
-                        (tri[(k + 1) % 3] - tri[k]).norm_square()));
-      return 1e-28 * L2 * L2;
     }
 
     /**
@@ -89,11 +74,7 @@ namespace TissueContact
           for (unsigned int j = 0; j < 4; ++j)
             G[k] += polygon.vertex[k].lambda[j] * g[j];
         }
-      return 0.5 * eps_p *
-             integral_of_square(x,
-                                G,
-                                polygon.n_vertices,
-                                zero_area_threshold(tri));
+      return 0.5 * eps_p * integral_of_square(x, G, polygon.n_vertices);
     }
 
     /** Area of the intersection of the triangle with the tetrahedron. */
@@ -139,6 +120,43 @@ namespace TissueContact
     differentiate_once(
       const std::vector<double> &coordinates,
       const std::function<ADNumber1(const std::vector<ADNumber1> &)> &energy);
+
+    /**
+     * Value, gradient and (if @p with_hessian) Hessian with respect to the
+     * 21 coordinates (tetrahedron vertices, then triangle vertices) of a
+     * pair energy @p energy(tet, tri), a generic callable templated on the
+     * number type, by automatic differentiation.
+     */
+    template <typename PairEnergy>
+    PairDerivatives
+    differentiate_pair(const std::array<Point<3>, 4> &tet,
+                       const std::array<Point<3>, 3> &tri,
+                       const bool                     with_hessian,
+                       const PairEnergy              &energy)
+    {
+      std::vector<double> coordinates;
+      for (const auto &p : tet)
+        for (unsigned int d = 0; d < 3; ++d)
+          coordinates.push_back(p[d]);
+      for (const auto &p : tri)
+        for (unsigned int d = 0; d < 3; ++d)
+          coordinates.push_back(p[d]);
+      const auto unpack = [&](const auto &x) {
+        using Number = typename std::decay_t<decltype(x)>::value_type;
+        std::array<Point<3, Number>, 4> tet_ad;
+        std::array<Point<3, Number>, 3> tri_ad;
+        for (unsigned int v = 0; v < 4; ++v)
+          for (unsigned int d = 0; d < 3; ++d)
+            tet_ad[v][d] = x[3 * v + d];
+        for (unsigned int v = 0; v < 3; ++v)
+          for (unsigned int d = 0; d < 3; ++d)
+            tri_ad[v][d] = x[12 + 3 * v + d];
+        return energy(tet_ad, tri_ad);
+      };
+      if (with_hessian)
+        return differentiate(coordinates, unpack);
+      return differentiate_once(coordinates, unpack);
+    }
 
     PairDerivatives
     penalty_derivatives_ad(const std::array<Point<3>, 4> &tet,

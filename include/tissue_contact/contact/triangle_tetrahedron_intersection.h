@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <deal.II/base/point.h>
 #include <deal.II/differentiation/ad/ad_number_traits.h>
@@ -75,21 +76,60 @@ namespace TissueContact
         }
       polygon.n_vertices = 3;
 
+      // Which side of face i a point is on, decided by an orientation test
+      // on the face's vertices in lexicographic order: every tetrahedron
+      // sharing the face evaluates it bit for bit alike, so a point on a
+      // shared face belongs to exactly one of them (for an exact zero: the
+      // one whose opposite vertex has a positive orientation), and the
+      // one-sided derivatives of neighbours add up to the derivative of the
+      // total energy.
+      const auto value_of = [&](const Point<3, Number> &x) {
+        return Point<3>(value(x[0]), value(x[1]), value(x[2]));
+      };
+      const auto side = [&](const unsigned int i, const Point<3> &p) {
+        std::array<Point<3>, 3> f;
+        unsigned int            m = 0;
+        for (unsigned int k = 0; k < 4; ++k)
+          if (k != i)
+            f[m++] = value_of(tet[k]);
+        std::sort(f.begin(), f.end(), [](const Point<3> &a, const Point<3> &b) {
+          return std::lexicographical_compare(&a[0],
+                                              &a[0] + 3,
+                                              &b[0],
+                                              &b[0] + 3);
+        });
+        return cross_product_3d(f[1] - f[0], f[2] - f[0]) * (p - f[0]);
+      };
+
       for (unsigned int i = 0; i < 4 && polygon.n_vertices > 0; ++i)
         {
+          const double inward = side(i, value_of(tet[i])) > 0. ? 1. : -1.;
+          const auto   inside = [&](const PolygonVertex<Number> &v) {
+            const double s = side(i, value_of(v.x)) * inward;
+            return s > 0. || (s == 0. && inward > 0.);
+          };
           clipped.n_vertices   = 0;
           const unsigned int n = polygon.n_vertices;
           for (unsigned int k = 0; k < n; ++k)
             {
               const PolygonVertex<Number> &p    = polygon.vertex[k];
               const PolygonVertex<Number> &q    = polygon.vertex[(k + 1) % n];
-              const bool                   p_in = value(p.lambda[i]) >= 0.;
-              const bool                   q_in = value(q.lambda[i]) >= 0.;
+              const bool                   p_in = inside(p);
+              const bool                   q_in = inside(q);
               if (p_in)
                 clipped.vertex[clipped.n_vertices++] = p;
               if (p_in != q_in)
                 {
-                  const Number t = p.lambda[i] / (p.lambda[i] - q.lambda[i]);
+                  // crossing parameter from the barycentric coordinate,
+                  // kept in [0, 1] where rounding disagrees with the side
+                  const Number denominator = p.lambda[i] - q.lambda[i];
+                  Number       t           = Number(0.);
+                  if (value(denominator) != 0.)
+                    t = p.lambda[i] / denominator;
+                  if (value(t) < 0.)
+                    t = Number(0.);
+                  else if (value(t) > 1.)
+                    t = Number(1.);
                   PolygonVertex<Number> &c =
                     clipped.vertex[clipped.n_vertices++];
                   c.x = p.x + t * (q.x - p.x);

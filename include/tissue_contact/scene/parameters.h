@@ -102,7 +102,8 @@ namespace TissueContact
     struct ContactPairParameters
     {
       types::material_id surface_body = 0, volume_body = 0;
-      double             penalty = 1e3;
+      double             penalty           = 1e3;
+      bool               point_collocation = false;
 
       static void
       declare(ParameterHandler &prm);
