@@ -1,4 +1,5 @@
 #include <deal.II/base/data_out_base.h>
+#include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/numerics/data_out.h>
 #include <fstream>
 #include <iomanip>
@@ -28,7 +29,8 @@ namespace TissueContact
     VtuSeriesWriter::write(const Elasticity::Discretization   &disc,
                            const Elasticity::ElasticAssembler &assembler,
                            const Vector<double>               &u,
-                           const double                        time)
+                           const double                        time,
+                           const std::vector<double>          *vertex_depth)
     {
       const Elasticity::CellQuantities q = assembler.cell_quantities(u);
       Vector<double>                   material_id(q.J.size());
@@ -59,6 +61,19 @@ namespace TissueContact
       data_out.add_data_vector(q.von_mises, "von_mises");
       data_out.add_data_vector(q.strain_energy_density,
                                "strain_energy_density");
+      // the material depth as a linear field on the vertices
+      DoFHandler<3>  depth_dofs(disc.dof_handler.get_triangulation());
+      Vector<double> depth;
+      if (vertex_depth != nullptr)
+        {
+          depth_dofs.distribute_dofs(FE_SimplexP<3>(1));
+          depth.reinit(depth_dofs.n_dofs());
+          for (const auto &cell : depth_dofs.active_cell_iterators())
+            for (const unsigned int v : cell->vertex_indices())
+              depth[cell->vertex_dof_index(v, 0)] =
+                (*vertex_depth)[cell->vertex_index(v)];
+          data_out.add_data_vector(depth_dofs, depth, "material_depth");
+        }
       data_out.build_patches(disc.mapping, disc.degree);
 
       std::ostringstream name;

@@ -145,6 +145,12 @@ namespace TissueContact
     Output::ConvergenceLog  log(out, csv);
     Output::VtuSeriesWriter vtu(p.output.directory, p.output.base_name);
 
+    // the material depth is written when body contact is declared
+    const auto depth_field = [&]() -> const std::vector<double> * {
+      return contact && !p.contact.pairs.empty() ? &contact->vertex_depth() :
+                                                   nullptr;
+    };
+
     Solvers::IncrementalNewtonSolver solver(p.solver);
     solver.on_iteration = [&](const Solvers::IterationInfo &i) {
       log.iteration(i);
@@ -157,13 +163,13 @@ namespace TissueContact
         if (p.output.write_vtu)
           {
             TimerOutput::Scope scope(timer, "output");
-            vtu.write(disc, assembler, u, lambda);
+            vtu.write(disc, assembler, u, lambda, depth_field());
           }
       };
 
     u = 0.;
     if (p.output.write_vtu)
-      vtu.write(disc, assembler, u, 0.);
+      vtu.write(disc, assembler, u, 0., depth_field());
 
     Solvers::SolveStatistics statistics;
     try

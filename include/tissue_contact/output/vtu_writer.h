@@ -18,7 +18,8 @@ namespace TissueContact
      * the ParaView series <base>.pvd after each, so a run that stops keeps
      * a readable series. Fields: displacement (point data, P2 written with
      * subdivided cells), material id, J, Cauchy stress (6 components), von
-     * Mises stress and strain-energy density (cell averages). The PVD
+     * Mises stress and strain-energy density (cell averages), and, when
+     * given, the material depth of contact (per vertex, linear). The PVD
      * "timestep" is the load factor.
      */
     class VtuSeriesWriter
@@ -33,7 +34,8 @@ namespace TissueContact
       write(const Elasticity::Discretization   &disc,
             const Elasticity::ElasticAssembler &assembler,
             const Vector<double>               &u,
-            const double                        time);
+            const double                        time,
+            const std::vector<double>          *vertex_depth = nullptr);
 
       /** Path of the PVD file. */
       std::string
