@@ -10,7 +10,7 @@ namespace TissueContact
   {
     /**
      * A rigid obstacle with an analytic penetration depth d(x)
-     * (dissertation 5.2; doc/theory/05-contact.md, sec. 5):
+     * (dissertation 5.2; doc/theory/05-contact.md, sec. 6):
      * - a plane through @p point with unit normal @p normal pointing out of
      *   the obstacle (the bodies stay on that side):
      *   @f$d = -(x - p)\cdot n@f$;

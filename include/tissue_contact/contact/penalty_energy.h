@@ -48,7 +48,7 @@ namespace TissueContact
 
     /**
      * The penalty energy of one triangle-tetrahedron pair (dissertation
-     * 5.4.6, paper 5.3; doc/theory/05-contact.md, sec. 3):
+     * 5.4.6, paper 5.3; doc/theory/05-contact.md, sec. 4):
      * @f[ W = \frac{\varepsilon_p}{2}\int_{T\cap K} g^2\,da, \qquad
      *     g(x) = \sum_{j=0}^{3} \lambda_j(x)\, g_j, @f]
      * with the material depths @f$g_j@f$ of the tetrahedron's vertices and

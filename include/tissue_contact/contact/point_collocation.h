@@ -15,7 +15,7 @@ namespace TissueContact
      * contains the vertex. Its force @f$\varepsilon_p A_T/3\; g\nabla g@f$
      * jumps when a vertex crosses into a tetrahedron with another depth
      * gradient: the chatter that area integration removes
-     * (doc/theory/05-contact.md, sec. 9). Kept for comparison.
+     * (doc/theory/05-contact.md, sec. 8). Kept for comparison.
      */
     template <typename Number>
     Number

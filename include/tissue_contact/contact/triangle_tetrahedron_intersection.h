@@ -32,7 +32,7 @@ namespace TissueContact
     /**
      * Clip the triangle @p tri by the four half-spaces
      * @f$\lambda_i \ge 0@f$ of the tetrahedron @p tet (Sutherland-Hodgman;
-     * doc/theory/05-contact.md, sec. 2). The barycentric coordinates are
+     * doc/theory/05-contact.md, sec. 3). The barycentric coordinates are
      * affine in position, so they are carried along: a new vertex on the
      * segment from p to q, cut by plane i, is
      * @f$p + t(q - p)@f$ with @f$t = \lambda_i(p)/(\lambda_i(p) -
