@@ -114,6 +114,19 @@ namespace TissueContact
     }
 
 
+    ContactAssembler::PairGeometry
+    ContactAssembler::pair_geometry(const std::vector<Point<3>> &x,
+                                    const unsigned int           t,
+                                    const unsigned int           k) const
+    {
+      const auto &kv = tets[k];
+      const auto &tv = triangles[t];
+      return {{x[kv[0]], x[kv[1]], x[kv[2]], x[kv[3]]},
+              {x[tv[0]], x[tv[1]], x[tv[2]]},
+              {depth[kv[0]], depth[kv[1]], depth[kv[2]], depth[kv[3]]}};
+    }
+
+
     std::array<types::global_dof_index, 21>
     ContactAssembler::pair_dofs(const unsigned int t,
                                 const unsigned int k) const
@@ -236,17 +249,7 @@ namespace TissueContact
         x,
         0.,
         [&](const unsigned int t, const unsigned int k, const BodyContact &p) {
-          const std::array<Point<3>, 4> tet = {x[tets[k][0]],
-                                               x[tets[k][1]],
-                                               x[tets[k][2]],
-                                               x[tets[k][3]]};
-          const std::array<Point<3>, 3> tri = {x[triangles[t][0]],
-                                               x[triangles[t][1]],
-                                               x[triangles[t][2]]};
-          const std::array<double, 4>   g   = {depth[tets[k][0]],
-                                               depth[tets[k][1]],
-                                               depth[tets[k][2]],
-                                               depth[tets[k][3]]};
+          const auto [tet, tri, g] = pair_geometry(x, t, k);
           // cheap rejection before differentiating: zero energy has zero
           // gradient (the energy is nonnegative)
           if (*std::max_element(g.begin(), g.end()) <= 0.)
@@ -370,17 +373,7 @@ namespace TissueContact
             [&](const unsigned int t,
                 const unsigned int k,
                 const BodyContact &p) {
-              const std::array<Point<3>, 4> tet = {x[tets[k][0]],
-                                                   x[tets[k][1]],
-                                                   x[tets[k][2]],
-                                                   x[tets[k][3]]};
-              const std::array<Point<3>, 3> tri = {x[triangles[t][0]],
-                                                   x[triangles[t][1]],
-                                                   x[triangles[t][2]]};
-              const std::array<double, 4>   g   = {depth[tets[k][0]],
-                                                   depth[tets[k][1]],
-                                                   depth[tets[k][2]],
-                                                   depth[tets[k][3]]};
+              const auto [tet, tri, g] = pair_geometry(x, t, k);
               W += p.point_collocation ?
                      collocation_energy<double>(tet, tri, g, p.penalty) :
                      penalty_energy<double>(tet, tri, g, p.penalty);

@@ -132,6 +132,18 @@ namespace TissueContact
       for_each_candidate(const std::vector<Point<3>> &x,
                          const double                 margin,
                          const F                     &f) const;
+      /** The positions and depths of triangle t and tetrahedron k. */
+      struct PairGeometry
+      {
+        std::array<Point<3>, 4> tet;
+        std::array<Point<3>, 3> tri;
+        std::array<double, 4>   g;
+      };
+      PairGeometry
+      pair_geometry(const std::vector<Point<3>> &x,
+                    const unsigned int           t,
+                    const unsigned int           k) const;
+
 
       std::array<types::global_dof_index, 21>
       pair_dofs(const unsigned int t, const unsigned int k) const;
