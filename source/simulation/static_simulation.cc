@@ -200,8 +200,8 @@ namespace TissueContact
           << ", max penetration " << contact->max_obstacle_penetration(u)
           << "\n";
     if (contact && !p.contact.pairs.empty())
-      out << "  largest material depth reached by a contact vertex in "
-             "another body: "
+      out << "  penetration (largest material depth reached by a contact "
+             "vertex inside a paired body): "
           << contact->max_body_penetration(u) << "\n";
     if (p.output.write_vtu)
       out << "  results: " << vtu.pvd_file() << " (open in ParaView)\n";

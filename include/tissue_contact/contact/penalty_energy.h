@@ -65,8 +65,8 @@ namespace TissueContact
       const IntersectionPolygon<Number> polygon = intersect(tet, tri);
       if (polygon.n_vertices < 3)
         return Number(0.);
-      std::array<Point<3, Number>, 8> x;
-      std::array<Number, 8>           G;
+      std::array<Point<3, Number>, 9> x;
+      std::array<Number, 9>           G;
       for (unsigned int k = 0; k < polygon.n_vertices; ++k)
         {
           x[k] = polygon.vertex[k].x;

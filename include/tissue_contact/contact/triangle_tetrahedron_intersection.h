@@ -25,7 +25,7 @@ namespace TissueContact
     template <typename Number>
     struct IntersectionPolygon
     {
-      std::array<PolygonVertex<Number>, 8> vertex;
+      std::array<PolygonVertex<Number>, 9> vertex;
       unsigned int                         n_vertices = 0;
     };
 
@@ -98,7 +98,15 @@ namespace TissueContact
                                               &b[0],
                                               &b[0] + 3);
         });
-        return cross_product_3d(f[1] - f[0], f[2] - f[0]) * (p - f[0]);
+        // values within rounding of zero are snapped to zero, so that a
+        // polygon lying in the face plane gets one decision for all its
+        // vertices instead of noise-driven alternating ones
+        const Tensor<1, 3> e1 = f[1] - f[0], e2 = f[2] - f[0];
+        const Tensor<1, 3> n = cross_product_3d(e1, e2);
+        const double       s = n * (p - f[0]);
+        const double       scale =
+          n.norm() * (e1.norm() + e2.norm() + (p - f[0]).norm());
+        return std::abs(s) <= 1e-12 * scale ? 0. : s;
       };
 
       for (unsigned int i = 0; i < 4 && polygon.n_vertices > 0; ++i)
@@ -116,6 +124,10 @@ namespace TissueContact
               const PolygonVertex<Number> &q    = polygon.vertex[(k + 1) % n];
               const bool                   p_in = inside(p);
               const bool                   q_in = inside(q);
+              // a convex polygon gains at most one vertex per plane; the
+              // guard only protects against pathological rounding
+              if (clipped.n_vertices + 2 > clipped.vertex.size())
+                break;
               if (p_in)
                 clipped.vertex[clipped.n_vertices++] = p;
               if (p_in != q_in)
