@@ -4,7 +4,8 @@
 // quasi-viscosity). For penalty factors eps = 1e2 ... 1e5: the reaction of
 // the obstacle equals the applied load, and the penetration falls as 1/eps
 // (for a uniform pressure, p = eps d). Also a large sphere as the obstacle,
-// and Newton's convergence with contact in the last increment.
+// and Newton's convergence with contact in the last increment (the ratios
+// r_k+1 / r_k^2 stay bounded: quadratic once the contact set has settled).
 
 #include "../tests.h"
 
@@ -120,6 +121,12 @@ main(int argc, char **argv)
           deallog << "  last increment, residuals:";
           for (const double v : r)
             deallog << " " << std::setprecision(1) << std::scientific << v;
+          deallog << std::defaultfloat << std::setprecision(6) << std::endl;
+          // bounded for quadratic convergence
+          deallog << "  r_k+1 / r_k^2:";
+          for (unsigned int k = 0; k + 1 < r.size(); ++k)
+            deallog << " " << std::setprecision(1) << std::scientific
+                    << r[k + 1] / (r[k] * r[k]);
           deallog << std::defaultfloat << std::setprecision(6) << std::endl;
         }
     }
