@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <tissue_contact/contact/contact_assembler.h>
 #include <tissue_contact/contact/material_depth.h>
 
@@ -208,20 +209,43 @@ namespace TissueContact
                                     }
                                 });
 
-      for_each_pair_contact(u,
-                            K != nullptr,
-                            [&](const unsigned int     t,
-                                const unsigned int     k,
-                                const PairDerivatives &d) {
-                              const auto dofs = pair_dofs(t, k);
-                              for (unsigned int i = 0; i < 21; ++i)
-                                {
-                                  R[dofs[i]] += d.gradient[i];
-                                  if (K != nullptr)
-                                    for (unsigned int j = 0; j < 21; ++j)
-                                      K->add(dofs[i], dofs[j], d.hessian(i, j));
-                                }
-                            });
+      for_each_pair_contact(
+        u,
+        K != nullptr,
+        [&](const unsigned int t, const unsigned int k, const PairKernel &d) {
+          const auto dofs = pair_dofs(t, k);
+          for (unsigned int i = 0; i < 21; ++i)
+            R[dofs[i]] += d.gradient[i];
+          if (K == nullptr)
+            return;
+          // rows added with sorted, unique column indices (a vertex shared
+          // by the triangle and the tetrahedron appears twice among the 21)
+          std::array<types::global_dof_index, 21> unique_dofs;
+          std::array<unsigned int, 21>            slot;
+          unsigned int                            n_unique = 0;
+          std::array<unsigned int, 21>            order;
+          std::iota(order.begin(), order.end(), 0);
+          std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
+            return dofs[a] < dofs[b];
+          });
+          for (const unsigned int i : order)
+            {
+              if (n_unique == 0 || unique_dofs[n_unique - 1] != dofs[i])
+                unique_dofs[n_unique++] = dofs[i];
+              slot[i] = n_unique - 1;
+            }
+          std::array<std::array<double, 21>, 21> block{};
+          for (unsigned int i = 0; i < 21; ++i)
+            for (unsigned int j = 0; j < 21; ++j)
+              block[slot[i]][slot[j]] += d.hessian[i][j];
+          for (unsigned int i = 0; i < n_unique; ++i)
+            K->add(unique_dofs[i],
+                   n_unique,
+                   unique_dofs.data(),
+                   block[i].data(),
+                   false,
+                   true);
+        });
     }
 
 
@@ -254,19 +278,26 @@ namespace TissueContact
           // gradient (the energy is nonnegative)
           if (*std::max_element(g.begin(), g.end()) <= 0.)
             return;
+          PairKernel d;
           if (p.point_collocation)
             {
               if (collocation_energy<double>(tet, tri, g, p.penalty) > 0.)
-                f(t,
-                  k,
-                  collocation_derivatives_ad(
-                    tet, tri, g, p.penalty, with_hessian));
+                {
+                  const PairDerivatives ad = collocation_derivatives_ad(
+                    tet, tri, g, p.penalty, with_hessian);
+                  d.energy = ad.energy;
+                  for (unsigned int i = 0; i < 21; ++i)
+                    {
+                      d.gradient[i] = ad.gradient[i];
+                      for (unsigned int j = 0; with_hessian && j < 21; ++j)
+                        d.hessian[i][j] = ad.hessian(i, j);
+                    }
+                  f(t, k, d);
+                }
               return;
             }
-          if (penalty_energy<double>(tet, tri, g, p.penalty) > 0.)
-            f(t,
-              k,
-              penalty_derivatives_ad(tet, tri, g, p.penalty, with_hessian));
+          if (penalty_kernel(tet, tri, g, p.penalty, with_hessian, d))
+            f(t, k, d);
         });
     }
 

@@ -13,6 +13,7 @@
 #include "../tests.h"
 
 #include <tissue_contact/contact/penalty_energy.h>
+#include <tissue_contact/contact/penalty_kernel.h>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -81,6 +82,34 @@ namespace
     for (unsigned v = 0; v < 3; ++v)
       tri[v] = Point<3>(c[12 + 3 * v], c[13 + 3 * v], c[14 + 3 * v]);
     return Contact::penalty_derivatives_ad(tet, tri, g, 10.);
+  }
+
+  /** The hand-derived kernel, in the reference's storage. */
+  Contact::PairDerivatives
+  hand_derivatives_of(const std::vector<double>   &c,
+                      const std::array<double, 4> &g)
+  {
+    Tet tet;
+    Tri tri;
+    for (unsigned v = 0; v < 4; ++v)
+      tet[v] = Point<3>(c[3 * v], c[3 * v + 1], c[3 * v + 2]);
+    for (unsigned v = 0; v < 3; ++v)
+      tri[v] = Point<3>(c[12 + 3 * v], c[13 + 3 * v], c[14 + 3 * v]);
+    Contact::PairKernel      k;
+    Contact::PairDerivatives d;
+    d.gradient.reinit(21);
+    d.hessian.reinit(21, 21);
+    if (Contact::penalty_kernel(tet, tri, g, 10., true, k))
+      {
+        d.energy = k.energy;
+        for (unsigned int i = 0; i < 21; ++i)
+          {
+            d.gradient[i] = k.gradient[i];
+            for (unsigned int j = 0; j < 21; ++j)
+              d.hessian(i, j) = k.hessian[i][j];
+          }
+      }
+    return d;
   }
 
   std::vector<double>
@@ -235,6 +264,166 @@ namespace
             << error_bound(rigid, -12) << std::endl;
   }
 
+  /**
+   * A triangle near the tetrahedron; @p kind picks a near-degenerate
+   * family: 0 generic, 1 a triangle vertex on a face, 2 a triangle vertex
+   * on an edge, 3 a triangle vertex at a tetrahedron vertex, 4 the
+   * triangle in a face plane; positions within @p offset of exact.
+   */
+  Tri
+  triangle_near(const Tet &tet, const unsigned int kind, const double offset)
+  {
+    Tri        tri = {random_point(0.8), random_point(0.8), random_point(0.8)};
+    const auto on_tet = [&](std::array<double, 4> lambda) {
+      double sum = 0.;
+      for (auto &l : lambda)
+        sum += l;
+      Point<3> p;
+      for (unsigned int j = 0; j < 4; ++j)
+        p += lambda[j] / sum * tet[j];
+      return p + random_point(offset);
+    };
+    const double a = random_value(0, 1), b = random_value(0, 1),
+                 c               = random_value(0, 1);
+    const unsigned int    i      = std::min(3, int(random_value(0, 4)));
+    std::array<double, 4> lambda = {a, b, c, random_value(0, 1)};
+    switch (kind)
+      {
+        case 1:
+          lambda[i] = 0.;
+          tri[0]    = on_tet(lambda);
+          break;
+        case 2:
+          lambda[i]           = 0.;
+          lambda[(i + 1) % 4] = 0.;
+          tri[0]              = on_tet(lambda);
+          break;
+        case 3:
+          tri[0] = tet[i] + random_point(offset);
+          break;
+        case 4:
+          for (auto &p : tri)
+            {
+              std::array<double, 4> l = {random_value(-0.3, 1),
+                                         random_value(-0.3, 1),
+                                         random_value(-0.3, 1),
+                                         random_value(-0.3, 1)};
+              l[i]                    = 0.;
+              p                       = on_tet(l);
+            }
+          break;
+        default:
+          break;
+      }
+    return tri;
+  }
+
+  /**
+   * The hand-derived kernel against the AD reference on 600 intersecting
+   * pairs per family, 1e-6 from the degenerate position (both are smooth
+   * there; the derivatives of the cut ratios grow like 1/offset^k, so the
+   * agreement is the conditioning's), then at the degenerate position
+   * itself (within rounding), where the energy has a kink and the two
+   * may pick different one-sided derivatives: there the energies must
+   * agree and everything must be finite. Near edges and vertices the
+   * reference loses digits (its clipping cuts sub-segments 1e-6 long);
+   * the hand kernel's Hessian is checked against central differences of
+   * its own gradient (step 1e-9) on the first 100 pairs of each family.
+   */
+  void
+  hand_kernel_against_ad()
+  {
+    static const char *names[] = {"generic",
+                                  "vertex near a face",
+                                  "vertex near an edge",
+                                  "vertex near a vertex",
+                                  "triangle near a face plane"};
+    // smallest exponents printed (energy, gradient, Hessian) per family
+    static const int exponents[5][3] = {{-12, -10, -8},
+                                        {-12, -10, -8},
+                                        {-12, -6, -1},
+                                        {-12, -6, -1},
+                                        {-6, -2, 0}};
+    for (const double offset : {1e-6, 0.})
+      for (unsigned int kind = (offset == 0. ? 1 : 0); kind < 5; ++kind)
+        {
+          double       err_e = 0., err_g = 0., err_h = 0.;
+          unsigned int n_fd_agree = 0;
+          unsigned int n_cut      = 0;
+          bool         finite     = true;
+          while (n_cut < 600)
+            {
+              const Tet  tet = random_tet();
+              const Tri  tri = triangle_near(tet, kind, offset);
+              const auto g   = random_depths();
+              const auto c   = coordinates(tet, tri);
+              const auto ad  = derivatives_of(c, g);
+              const auto h   = hand_derivatives_of(c, g);
+              finite         = finite && std::isfinite(h.energy) &&
+                       std::isfinite(h.gradient.l2_norm()) &&
+                       std::isfinite(h.hessian.frobenius_norm());
+              if (ad.energy <= 0. && h.energy <= 0.)
+                continue;
+              ++n_cut;
+              // errors relative to the pair's scale eps A_T max(g)^2 (the
+              // lengths are of order one), so that rounding-level slivers
+              // (energies of 1e-30) compare absolutely
+              const double scale =
+                10. * 0.5 *
+                cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]).norm() *
+                std::pow(*std::max_element(g.begin(), g.end()), 2);
+              err_e = std::max(err_e,
+                               std::abs(h.energy - ad.energy) /
+                                 std::max(ad.energy, scale));
+              Vector<double> dg(h.gradient);
+              dg -= ad.gradient;
+              err_g =
+                std::max(err_g,
+                         dg.l2_norm() / std::max(ad.gradient.l2_norm(), scale));
+              FullMatrix<double> dH(h.hessian);
+              dH.add(-1., ad.hessian);
+              err_h = std::max(err_h,
+                               dH.frobenius_norm() /
+                                 std::max(ad.hessian.frobenius_norm(), scale));
+              if (offset > 0. && n_cut <= 100)
+                {
+                  const double       step = 1e-9;
+                  FullMatrix<double> H_fd(21, 21);
+                  for (unsigned int i = 0; i < 21; ++i)
+                    {
+                      auto cp = c, cm = c;
+                      cp[i] += step;
+                      cm[i] -= step;
+                      const auto hp = hand_derivatives_of(cp, g),
+                                 hm = hand_derivatives_of(cm, g);
+                      for (unsigned int j = 0; j < 21; ++j)
+                        H_fd(j, i) =
+                          (hp.gradient[j] - hm.gradient[j]) / (2 * step);
+                    }
+                  H_fd.add(-1., h.hessian);
+                  // a step across a change of the clipping's case (within
+                  // 1e-9 of it) gives an O(1) difference: count agreements
+                  n_fd_agree +=
+                    H_fd.frobenius_norm() <
+                    1e-3 * std::max(h.hessian.frobenius_norm(), scale);
+                }
+            }
+          deallog << "hand kernel vs AD, " << names[kind];
+          if (offset == 0.)
+            deallog << ", exactly (" << n_cut << " pairs): energy "
+                    << error_bound(err_e, -12) << ", all finite " << finite
+                    << std::endl;
+          else
+            deallog
+              << " (" << n_cut << " pairs): energy "
+              << error_bound(err_e, exponents[kind][0]) << ", gradient "
+              << error_bound(err_g, exponents[kind][1]) << ", Hessian "
+              << error_bound(err_h, exponents[kind][2])
+              << "; its Hessian agrees with FD of its gradient to 1e-3 on "
+              << n_fd_agree << " of 100, all finite " << finite << std::endl;
+        }
+  }
+
   void
   degenerate_positions()
   {
@@ -309,5 +498,6 @@ main()
   initlog();
   area_against_sampling();
   derivatives_against_fd();
+  hand_kernel_against_ad();
   degenerate_positions();
 }

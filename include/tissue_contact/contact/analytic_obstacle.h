@@ -87,7 +87,7 @@ namespace TissueContact
         }
       if (n < 3)
         return Number(0.);
-      return 0.5 * eps_p * integral_of_square(x, d, n);
+      return 0.5 * eps_p * integral_of_square(x, d, n, unit_normal(tri));
     }
 
     /** obstacle_energy() with its gradient and Hessian with respect to the

@@ -8,6 +8,7 @@
 #include <set>
 #include <tissue_contact/contact/analytic_obstacle.h>
 #include <tissue_contact/contact/bounding_volume_tree.h>
+#include <tissue_contact/contact/penalty_kernel.h>
 #include <tissue_contact/contact/point_collocation.h>
 #include <tissue_contact/elasticity/discretization.h>
 #include <vector>

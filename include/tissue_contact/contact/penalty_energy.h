@@ -16,34 +16,43 @@ namespace TissueContact
     /**
      * @f$\int_P g^2\,da@f$ over a planar convex polygon P with vertices
      * @p x and values @p G of a function g that is linear on P: fan P
-     * into triangles; on one with area A and corner values
-     * @f$G_1, G_2, G_3@f$ the integral is exactly
-     * @f$\frac{A}{6}(G_1^2 + G_2^2 + G_3^2 + G_1G_2 + G_2G_3 + G_3G_1)@f$.
-     * Fan triangles of exactly zero area are skipped (the derivative of
-     * @f$|n|@f$ at @f$n = 0@f$ is not finite); slivers are kept: their area
-     * vanishes but their one-sided derivative does not, and neighbouring
-     * tetrahedra need it to add up to the derivative of the total.
+     * into triangles @f$(x_0, x_k, x_{k+1})@f$; on one with corner values
+     * @f$G_0, G_k, G_{k+1}@f$ the integral is exactly
+     * @f$\frac{\ell_k}{12}(G_0^2 + G_k^2 + G_{k+1}^2 + G_0G_k + G_kG_{k+1}
+     * + G_{k+1}G_0)@f$ with twice its area
+     * @f$\ell_k = n_k\cdot\nu@f$, @f$n_k = (x_k - x_0)\times(x_{k+1} -
+     * x_0)@f$ and @p nu the unit normal of the polygon's plane, oriented
+     * with its vertex order (doc/theory/05-contact.md, sec. 4). For a
+     * convex polygon @f$\ell_k = |n_k|@f$; unlike @f$|n_k|@f$, the signed
+     * form is a polynomial in the vertices, so a sliver (a fan triangle of
+     * rounding-level area, which degenerate positions produce) has bounded
+     * derivatives instead of a Hessian of order @f$1/|n_k|@f$.
      */
     template <typename Number, std::size_t N>
     Number
     integral_of_square(const std::array<Point<3, Number>, N> &x,
                        const std::array<Number, N>           &G,
-                       const unsigned int                     n_vertices)
+                       const unsigned int                     n_vertices,
+                       const Tensor<1, 3, Number>            &nu)
     {
-      using Traits = Differentiation::AD::ADNumberTraits<Number>;
       Number integral(0.);
       for (unsigned int k = 1; k + 1 < n_vertices; ++k)
-        {
-          const Tensor<1, 3, Number> n =
-            cross_product_3d(x[k] - x[0], x[k + 1] - x[0]);
-          const Number n2 = n.norm_square();
-          if (!(Traits::get_scalar_value(n2) > 0.))
-            continue;
-          integral += std::sqrt(n2) / 12. *
-                      (G[0] * G[0] + G[k] * G[k] + G[k + 1] * G[k + 1] +
-                       G[0] * G[k] + G[k] * G[k + 1] + G[k + 1] * G[0]);
-        }
+        integral += (cross_product_3d(x[k] - x[0], x[k + 1] - x[0]) * nu) /
+                    12. *
+                    (G[0] * G[0] + G[k] * G[k] + G[k + 1] * G[k + 1] +
+                     G[0] * G[k] + G[k] * G[k + 1] + G[k + 1] * G[0]);
       return integral;
+    }
+
+    /** The unit normal of a triangle, oriented by its vertex order. */
+    template <typename Number>
+    Tensor<1, 3, Number>
+    unit_normal(const std::array<Point<3, Number>, 3> &tri)
+    {
+      const Tensor<1, 3, Number> N =
+        cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]);
+      const Number length = std::sqrt(N.norm_square());
+      return N / length;
     }
 
     /**
@@ -74,7 +83,9 @@ namespace TissueContact
           for (unsigned int j = 0; j < 4; ++j)
             G[k] += polygon.vertex[k].lambda[j] * g[j];
         }
-      return 0.5 * eps_p * integral_of_square(x, G, polygon.n_vertices);
+      // the clipping keeps the triangle's vertex order
+      return 0.5 * eps_p *
+             integral_of_square(x, G, polygon.n_vertices, unit_normal(tri));
     }
 
     /** Area of the intersection of the triangle with the tetrahedron. */

@@ -11,13 +11,21 @@ namespace TissueContact
   {
     using namespace dealii;
 
-    /** A vertex of the intersection polygon: its position and its
-     * barycentric coordinates in the tetrahedron. */
+    /** A vertex of the intersection polygon: its position, its
+     * barycentric coordinates in the tetrahedron, and where it lies. A
+     * vertex is the meeting point of two constraint lines in the triangle's
+     * plane; constraint ids 0, 1, 2 are the triangle's edges (edge k from
+     * vertex k to vertex k+1), 3 + i is face i of the tetrahedron (opposite
+     * vertex i). @p edge_out is the constraint the polygon edge leaving the
+     * vertex lies on. The exact kernel (penalty_kernel.h) differentiates
+     * the vertex's closed form chosen by these labels. */
     template <typename Number>
     struct PolygonVertex
     {
-      Point<3, Number>      x;
-      std::array<Number, 4> lambda;
+      Point<3, Number>            x;
+      std::array<Number, 4>       lambda;
+      std::array<unsigned int, 2> on{{0, 0}};
+      unsigned int                edge_out = 0;
     };
 
     /** The intersection of a triangle with a tetrahedron: a convex polygon
@@ -73,6 +81,8 @@ namespace TissueContact
           v.lambda[2]                  = (r * n2) / six_volume;
           v.lambda[3]                  = (r * n3) / six_volume;
           v.lambda[0] = Number(1.) - v.lambda[1] - v.lambda[2] - v.lambda[3];
+          v.on        = {{(k + 2) % 3, k}};
+          v.edge_out  = k;
         }
       polygon.n_vertices = 3;
 
@@ -86,26 +96,42 @@ namespace TissueContact
       const auto value_of = [&](const Point<3, Number> &x) {
         return Point<3>(value(x[0]), value(x[1]), value(x[2]));
       };
+      struct Face
+      {
+        Point<3>     f0;
+        Tensor<1, 3> normal;
+        double       normal_norm, edge_norms;
+      };
+      std::array<Face, 4> faces;
+      for (unsigned int i = 0; i < 4; ++i)
+        {
+          std::array<Point<3>, 3> f;
+          unsigned int            m = 0;
+          for (unsigned int k = 0; k < 4; ++k)
+            if (k != i)
+              f[m++] = value_of(tet[k]);
+          std::sort(f.begin(),
+                    f.end(),
+                    [](const Point<3> &a, const Point<3> &b) {
+                      return std::lexicographical_compare(&a[0],
+                                                          &a[0] + 3,
+                                                          &b[0],
+                                                          &b[0] + 3);
+                    });
+          const Tensor<1, 3> e1 = f[1] - f[0], e2 = f[2] - f[0];
+          faces[i].f0          = f[0];
+          faces[i].normal      = cross_product_3d(e1, e2);
+          faces[i].normal_norm = faces[i].normal.norm();
+          faces[i].edge_norms  = e1.norm() + e2.norm();
+        }
+      // values within rounding of zero are snapped to zero, so that a
+      // polygon lying in the face plane gets one decision for all its
+      // vertices instead of noise-driven alternating ones
       const auto side = [&](const unsigned int i, const Point<3> &p) {
-        std::array<Point<3>, 3> f;
-        unsigned int            m = 0;
-        for (unsigned int k = 0; k < 4; ++k)
-          if (k != i)
-            f[m++] = value_of(tet[k]);
-        std::sort(f.begin(), f.end(), [](const Point<3> &a, const Point<3> &b) {
-          return std::lexicographical_compare(&a[0],
-                                              &a[0] + 3,
-                                              &b[0],
-                                              &b[0] + 3);
-        });
-        // values within rounding of zero are snapped to zero, so that a
-        // polygon lying in the face plane gets one decision for all its
-        // vertices instead of noise-driven alternating ones
-        const Tensor<1, 3> e1 = f[1] - f[0], e2 = f[2] - f[0];
-        const Tensor<1, 3> n = cross_product_3d(e1, e2);
-        const double       s = n * (p - f[0]);
-        const double       scale =
-          n.norm() * (e1.norm() + e2.norm() + (p - f[0]).norm());
+        const Face        &f     = faces[i];
+        const Tensor<1, 3> r     = p - f.f0;
+        const double       s     = f.normal * r;
+        const double       scale = f.normal_norm * (f.edge_norms + r.norm());
         return std::abs(s) <= 1e-12 * scale ? 0. : s;
       };
 
@@ -116,14 +142,20 @@ namespace TissueContact
             const double s = side(i, value_of(v.x)) * inward;
             return s > 0. || (s == 0. && inward > 0.);
           };
-          clipped.n_vertices   = 0;
-          const unsigned int n = polygon.n_vertices;
+          clipped.n_vertices    = 0;
+          const unsigned int  n = polygon.n_vertices;
+          std::array<bool, 9> is_inside;
+          unsigned int        n_inside = 0;
+          for (unsigned int k = 0; k < n; ++k)
+            n_inside += (is_inside[k] = inside(polygon.vertex[k]));
+          if (n_inside == n)
+            continue;
           for (unsigned int k = 0; k < n; ++k)
             {
               const PolygonVertex<Number> &p    = polygon.vertex[k];
               const PolygonVertex<Number> &q    = polygon.vertex[(k + 1) % n];
-              const bool                   p_in = inside(p);
-              const bool                   q_in = inside(q);
+              const bool                   p_in = is_inside[k];
+              const bool                   q_in = is_inside[(k + 1) % n];
               // a convex polygon gains at most one vertex per plane; the
               // guard only protects against pathological rounding
               if (clipped.n_vertices + 2 > clipped.vertex.size())
@@ -148,6 +180,11 @@ namespace TissueContact
                   for (unsigned int j = 0; j < 4; ++j)
                     c.lambda[j] = p.lambda[j] + t * (q.lambda[j] - p.lambda[j]);
                   c.lambda[i] = Number(0.);
+                  // the new vertex lies on the cut edge and on face i; the
+                  // polygon continues along face i if it leaves the
+                  // tetrahedron here, along the cut edge if it enters
+                  c.on       = {{p.edge_out, 3 + i}};
+                  c.edge_out = p_in ? 3 + i : p.edge_out;
                 }
             }
           std::swap(polygon, clipped);

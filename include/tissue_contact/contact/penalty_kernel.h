@@ -1,0 +1,48 @@
+#pragma once
+
+#include <array>
+#include <tissue_contact/contact/triangle_tetrahedron_intersection.h>
+
+namespace TissueContact
+{
+  namespace Contact
+  {
+    /**
+     * Energy, gradient and Hessian of one triangle-tetrahedron pair with
+     * respect to its 21 coordinates (the 4 tetrahedron vertices, then the 3
+     * triangle vertices, x y z each), in fixed-size storage: no allocation
+     * per pair.
+     */
+    struct PairKernel
+    {
+      static constexpr unsigned int n_coordinates = 21;
+
+      double                                 energy = 0.;
+      std::array<double, 21>                 gradient;
+      std::array<std::array<double, 21>, 21> hessian;
+    };
+
+    /**
+     * The penalty energy of a pair (penalty_energy.h) with its exact
+     * gradient and, if @p with_hessian, its exact Hessian, derived by hand
+     * (doc/theory/05-contact.md, sec. 5.1): every polygon vertex is, by its
+     * labels, a triangle vertex, a triangle edge cut by a face plane or a
+     * tetrahedron edge cut by the triangle plane, i.e. @f$x = (1-s)y_1 +
+     * s y_2@f$ with @f$s = a/(a-b)@f$ a ratio of two orientation
+     * determinants; the fan integral is differentiated in the polygon
+     * vertices and chained through these closed forms.
+     *
+     * Returns false (and leaves @p result unset) when the energy is zero.
+     * The automatic-differentiation reference penalty_derivatives_ad()
+     * computes the same numbers; the test contact/penalty_kernel compares
+     * them.
+     */
+    bool
+    penalty_kernel(const std::array<Point<3>, 4> &tet,
+                   const std::array<Point<3>, 3> &tri,
+                   const std::array<double, 4>   &g,
+                   const double                   eps_p,
+                   const bool                     with_hessian,
+                   PairKernel                    &result);
+  } // namespace Contact
+} // namespace TissueContact

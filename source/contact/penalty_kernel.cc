@@ -1,0 +1,523 @@
+#include <tissue_contact/contact/penalty_kernel.h>
+
+// Symbols follow doc/theory/05-contact.md, sec. 5.1.
+
+namespace TissueContact
+{
+  namespace Contact
+  {
+    namespace
+    {
+      constexpr unsigned int n = PairKernel::n_coordinates;
+      using Vec                = std::array<double, n>;
+      using Mat                = std::array<std::array<double, n>, n>;
+      /** The 7 points of a pair: tetrahedron vertices 0..3, triangle
+       * vertices 4..6; point P owns coordinates 3P, 3P+1, 3P+2. */
+      using Points = std::array<Point<3>, 7>;
+
+      /**
+       * The orientation determinant
+       * @f$O(p_0,p_1,p_2,p_3) = (p_1-p_0)\cdot((p_2-p_0)\times(p_3-p_0))@f$
+       * of four of the points, with its gradient.
+       */
+      struct Orientation
+      {
+        std::array<unsigned int, 4> point;
+        double                      value;
+        std::array<Tensor<1, 3>, 4> gradient;
+      };
+
+      Orientation
+      orientation(const Points &x, const std::array<unsigned int, 4> &P)
+      {
+        Orientation        o;
+        const Tensor<1, 3> e1 = x[P[1]] - x[P[0]], e2 = x[P[2]] - x[P[0]],
+                           e3 = x[P[3]] - x[P[0]];
+        o.point               = P;
+        o.gradient[1]         = cross_product_3d(e2, e3);
+        o.gradient[2]         = cross_product_3d(e3, e1);
+        o.gradient[3]         = cross_product_3d(e1, e2);
+        o.gradient[0] = -(o.gradient[1] + o.gradient[2] + o.gradient[3]);
+        o.value       = e1 * o.gradient[1];
+        return o;
+      }
+
+      /** v += c grad O */
+      void
+      add_gradient(Vec &v, const Orientation &o, const double c)
+      {
+        for (unsigned int a = 0; a < 4; ++a)
+          for (unsigned int d = 0; d < 3; ++d)
+            v[3 * o.point[a] + d] += c * o.gradient[a][d];
+      }
+
+      /**
+       * H += c Hess O. O is affine in each point, so the diagonal blocks
+       * vanish; block (a, b) is @f$[p_r - p_s]_\times@f$ for (a, b, r, s)
+       * an even permutation of (0, 1, 2, 3), and block (b, a) its
+       * transpose.
+       */
+      void
+      add_hessian(Mat &H, const Points &x, const Orientation &o, const double c)
+      {
+        static constexpr unsigned int even[6][4] = {{0, 1, 2, 3},
+                                                    {0, 2, 3, 1},
+                                                    {0, 3, 1, 2},
+                                                    {1, 2, 0, 3},
+                                                    {1, 3, 2, 0},
+                                                    {2, 3, 0, 1}};
+        for (const auto &perm : even)
+          {
+            const Tensor<1, 3> w =
+              c * (x[o.point[perm[2]]] - x[o.point[perm[3]]]);
+            const unsigned int i = 3 * o.point[perm[0]],
+                               j = 3 * o.point[perm[1]];
+            // [w]_x = [[0, -w2, w1], [w2, 0, -w0], [-w1, w0, 0]]
+            const double m[3][3] = {{0., -w[2], w[1]},
+                                    {w[2], 0., -w[0]},
+                                    {-w[1], w[0], 0.}};
+            for (unsigned int p = 0; p < 3; ++p)
+              for (unsigned int q = 0; q < 3; ++q)
+                {
+                  H[i + p][j + q] += m[p][q];
+                  H[j + q][i + p] += m[p][q];
+                }
+          }
+      }
+
+      /** @f$[a]_\times@f$, the matrix of @f$v \mapsto a \times v@f$ */
+      Tensor<2, 3>
+      cross_matrix(const Tensor<1, 3> &a)
+      {
+        return Tensor<2, 3>(
+          {{0., -a[2], a[1]}, {a[2], 0., -a[0]}, {-a[1], a[0], 0.}});
+      }
+
+      /** H += c (a b^T + b a^T) */
+      void
+      add_symmetric_outer(Mat &H, const Vec &a, const Vec &b, const double c)
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double ai = c * a[i], bi = c * b[i];
+            if (ai == 0. && bi == 0.)
+              continue;
+            for (unsigned int j = 0; j < n; ++j)
+              H[i][j] += ai * b[j] + bi * a[j];
+          }
+      }
+
+      /** The depth field at a triangle vertex t: @f$G_t = N_t / V@f$ with
+       * @f$N_t = \sum_j g_j D_{tj}@f$, @f$D_{tj}@f$ the orientation of the
+       * tetrahedron with vertex j replaced by t, V its own orientation. */
+      struct VertexDepth
+      {
+        std::array<Orientation, 4> D;
+        double                     N, G;
+        Vec                        grad_N, grad_G;
+      };
+
+      /** A polygon vertex in closed form: @f$x = (1-s)x_{P_1} + s
+       * x_{P_2}@f$, @f$G = (1-s)G_1 + sG_2@f$, @f$s = a/(a-b)@f$ (a, b
+       * orientations) unless @p s_varies is false (a triangle vertex, or a
+       * degenerate cut where s is a constant). G_i is the depth of triangle
+       * vertex @p t_i if t_i < 3, else the constant @p G_const_i. */
+      struct VertexForm
+      {
+        unsigned int P1 = 0, P2 = 0;
+        double       s        = 0.;
+        bool         s_varies = false;
+        Orientation  a, b;
+        double       s_a = 0., s_b = 0., s_aa = 0., s_ab = 0., s_bb = 0.;
+        Vec          grad_s;
+        unsigned int t1 = 3, t2 = 3;
+        double       G1 = 0., G2 = 0.;
+        Point<3>     x;
+        double       G = 0.;
+      };
+
+      void
+      set_ratio(VertexForm &v, const Orientation &a, const Orientation &b)
+      {
+        v.a            = a;
+        v.b            = b;
+        const double d = a.value - b.value;
+        v.s            = 0.;
+        if (d == 0.)
+          return;
+        v.s = a.value / d;
+        if (v.s < 0. || v.s > 1.)
+          {
+            // rounding disagrees with the side decision: the cut sits at
+            // the end point, as in intersect()
+            v.s = v.s < 0. ? 0. : 1.;
+            return;
+          }
+        v.s_varies = true;
+        v.s_a      = -b.value / (d * d);
+        v.s_b      = a.value / (d * d);
+        v.s_aa     = 2. * b.value / (d * d * d);
+        v.s_bb     = 2. * a.value / (d * d * d);
+        v.s_ab     = -(a.value + b.value) / (d * d * d);
+        v.grad_s.fill(0.);
+        add_gradient(v.grad_s, a, v.s_a);
+        add_gradient(v.grad_s, b, v.s_b);
+      }
+    } // namespace
+
+
+    bool
+    penalty_kernel(const std::array<Point<3>, 4> &tet,
+                   const std::array<Point<3>, 3> &tri,
+                   const std::array<double, 4>   &g,
+                   const double                   eps_p,
+                   const bool                     with_hessian,
+                   PairKernel                    &result)
+    {
+      const IntersectionPolygon<double> polygon = intersect(tet, tri);
+      const unsigned int                m       = polygon.n_vertices;
+      if (m < 3)
+        return false;
+      const Points x = {
+        {tet[0], tet[1], tet[2], tet[3], tri[0], tri[1], tri[2]}};
+
+      // depth field at the triangle vertices (sec. 5.1, G_t)
+      const Orientation          V = orientation(x, {{0, 1, 2, 3}});
+      std::array<VertexDepth, 3> depth;
+      for (unsigned int t = 0; t < 3; ++t)
+        {
+          VertexDepth &vd = depth[t];
+          vd.N            = 0.;
+          vd.grad_N.fill(0.);
+          for (unsigned int j = 0; j < 4; ++j)
+            {
+              std::array<unsigned int, 4> P = {{0, 1, 2, 3}};
+              P[j]                          = 4 + t;
+              vd.D[j]                       = orientation(x, P);
+              vd.N += g[j] * vd.D[j].value;
+              add_gradient(vd.grad_N, vd.D[j], g[j]);
+            }
+          vd.G = vd.N / V.value;
+          for (unsigned int i = 0; i < n; ++i)
+            vd.grad_G[i] = vd.grad_N[i] / V.value;
+          add_gradient(vd.grad_G, V, -vd.N / (V.value * V.value));
+        }
+
+      // the polygon vertices in closed form, from their labels
+      std::array<VertexForm, 9> form;
+      for (unsigned int k = 0; k < m; ++k)
+        {
+          VertexForm  &v  = form[k];
+          unsigned int c1 = polygon.vertex[k].on[0],
+                       c2 = polygon.vertex[k].on[1];
+          if (c1 > c2)
+            std::swap(c1, c2);
+          if (c2 < 3)
+            {
+              // two triangle edges: a triangle vertex
+              const unsigned int t = (c2 == c1 + 1) ? c2 : 0;
+              v.P1 = v.P2 = 4 + t;
+              v.t1 = v.t2 = t;
+            }
+          else if (c1 < 3)
+            {
+              // triangle edge c1 cut by face i: s from D_i at its ends
+              const unsigned int ta = c1, tb = (c1 + 1) % 3, i = c2 - 3;
+              v.P1 = 4 + ta;
+              v.P2 = 4 + tb;
+              v.t1 = ta;
+              v.t2 = tb;
+              set_ratio(v, depth[ta].D[i], depth[tb].D[i]);
+            }
+          else
+            {
+              // faces i and j: the tetrahedron edge p q cut by the
+              // triangle's plane
+              unsigned int p = 4, q = 4;
+              for (unsigned int r = 0; r < 4; ++r)
+                if (r != c1 - 3 && r != c2 - 3)
+                  (p == 4 ? p : q) = r;
+              v.P1 = p;
+              v.P2 = q;
+              v.G1 = g[p];
+              v.G2 = g[q];
+              set_ratio(v,
+                        orientation(x, {{4, 5, 6, p}}),
+                        orientation(x, {{4, 5, 6, q}}));
+            }
+          if (v.t1 < 3)
+            {
+              v.G1 = depth[v.t1].G;
+              v.G2 = depth[v.t2].G;
+            }
+          v.x = x[v.P1] + v.s * (x[v.P2] - x[v.P1]);
+          v.G = (1. - v.s) * v.G1 + v.s * v.G2;
+        }
+
+      // level 1: the fan integral W = c sum_k l_k Q_k, l_k = n_k . nu, in
+      // the primitives: (x, G) of each polygon vertex, 4 per vertex, then
+      // the triangle's unit normal nu (3)
+      const double       c   = eps_p / 24.;
+      const unsigned int inu = 4 * m, np = 4 * m + 3;
+      const Tensor<1, 3> NT =
+        cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]);
+      const double                           rT = NT.norm();
+      const Tensor<1, 3>                     nu = NT / rT;
+      std::array<double, 39>                 w{};
+      std::array<std::array<double, 39>, 39> HP;
+      if (with_hessian)
+        for (unsigned int a = 0; a < np; ++a)
+          std::fill(HP[a].begin(), HP[a].begin() + np, 0.);
+      double energy = 0.;
+      for (unsigned int k = 1; k + 1 < m; ++k)
+        {
+          const std::array<unsigned int, 3> vtx = {{0, k, k + 1}};
+          const Tensor<1, 3>                e1  = form[k].x - form[0].x,
+                             e2                 = form[k + 1].x - form[0].x;
+          const Tensor<1, 3> nk                 = cross_product_3d(e1, e2);
+          const double       l                  = nk * nu;
+          const double       GA = form[0].G, GB = form[k].G, GC = form[k + 1].G;
+          const double       Q =
+            GA * GA + GB * GB + GC * GC + GA * GB + GB * GC + GC * GA;
+          const std::array<double, 3> dQ = {
+            {2 * GA + GB + GC, 2 * GB + GA + GC, 2 * GC + GA + GB}};
+          energy += c * l * Q;
+          // dl/dx_X = N_X^T nu with N_X = dn_k/dx_X
+          std::array<Tensor<1, 3>, 3> dl;
+          dl[1] = cross_product_3d(e2, nu);
+          dl[2] = cross_product_3d(nu, e1);
+          dl[0] = -(dl[1] + dl[2]);
+          for (unsigned int X = 0; X < 3; ++X)
+            {
+              for (unsigned int d = 0; d < 3; ++d)
+                w[4 * vtx[X] + d] += c * Q * dl[X][d];
+              w[4 * vtx[X] + 3] += c * l * dQ[X];
+            }
+          for (unsigned int d = 0; d < 3; ++d)
+            w[inu + d] += c * Q * nk[d];
+          if (!with_hessian)
+            continue;
+          std::array<Tensor<2, 3>, 3> Nx;
+          Nx[1] = -cross_matrix(e2);
+          Nx[2] = cross_matrix(e1);
+          Nx[0] = -(Nx[1] + Nx[2]);
+          // l is bilinear in (e1, e2): d2l = nu . (de1 x de2), the blocks
+          // (A,B), (B,C), (C,A) are -[nu]_x, their transposes [nu]_x
+          const Tensor<2, 3> Bm = -cross_matrix(nu);
+          for (unsigned int X = 0; X < 3; ++X)
+            {
+              const unsigned int i = 4 * vtx[X];
+              for (unsigned int Y = 0; Y < 3; ++Y)
+                {
+                  const unsigned int j    = 4 * vtx[Y];
+                  const double       sign = (Y + 3 - X) % 3 == 1 ? 1. :
+                                            (X + 3 - Y) % 3 == 1 ? -1. :
+                                                                   0.;
+                  for (unsigned int p = 0; p < 3; ++p)
+                    {
+                      if (sign != 0.)
+                        for (unsigned int q = 0; q < 3; ++q)
+                          HP[i + p][j + q] += sign * c * Q * Bm[p][q];
+                      HP[i + p][j + 3] += c * dl[X][p] * dQ[Y];
+                      HP[j + 3][i + p] += c * dl[X][p] * dQ[Y];
+                    }
+                  HP[i + 3][j + 3] += c * l * (X == Y ? 2. : 1.);
+                }
+              // (x_X, nu): c Q N_X^T; (G_X, nu): c dQ_X n_k
+              for (unsigned int p = 0; p < 3; ++p)
+                for (unsigned int q = 0; q < 3; ++q)
+                  {
+                    HP[i + p][inu + q] += c * Q * Nx[X][q][p];
+                    HP[inu + q][i + p] += c * Q * Nx[X][q][p];
+                  }
+              for (unsigned int q = 0; q < 3; ++q)
+                {
+                  HP[i + 3][inu + q] += c * dQ[X] * nk[q];
+                  HP[inu + q][i + 3] += c * dQ[X] * nk[q];
+                }
+            }
+        }
+      if (!(energy > 0.))
+        return false;
+      result.energy = energy;
+
+      // nu = N_T / |N_T|: dnu/dN = (I - nu nu^T) / r_T, and N_T's
+      // derivatives in the triangle vertices M_X (points 4, 5, 6)
+      std::array<Tensor<2, 3>, 3> M;
+      M[1]             = -cross_matrix(tri[2] - tri[0]);
+      M[2]             = cross_matrix(tri[1] - tri[0]);
+      M[0]             = -(M[1] + M[2]);
+      Tensor<2, 3> Pnu = -outer_product(nu, nu);
+      for (unsigned int d = 0; d < 3; ++d)
+        Pnu[d][d] += 1.;
+      Pnu /= rT;
+      std::array<Tensor<2, 3>, 3> dnu; // dnu/dt_X
+      for (unsigned int X = 0; X < 3; ++X)
+        dnu[X] = Pnu * M[X];
+
+      // level 2: chain to the 21 coordinates
+      Vec &grad = result.gradient;
+      grad.fill(0.);
+      std::array<double, 3> omega{}; // weights of the depths G_t
+      std::array<double, 9> sigma{};
+      for (unsigned int k = 0; k < m; ++k)
+        {
+          const VertexForm &v = form[k];
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              grad[3 * v.P1 + d] += (1. - v.s) * w[4 * k + d];
+              grad[3 * v.P2 + d] += v.s * w[4 * k + d];
+            }
+          const double wG = w[4 * k + 3];
+          if (v.t1 < 3)
+            {
+              omega[v.t1] += (1. - v.s) * wG;
+              omega[v.t2] += v.s * wG;
+            }
+          if (v.s_varies)
+            {
+              sigma[k] = wG * (v.G2 - v.G1);
+              for (unsigned int d = 0; d < 3; ++d)
+                sigma[k] += w[4 * k + d] * (x[v.P2][d] - x[v.P1][d]);
+              for (unsigned int i = 0; i < n; ++i)
+                grad[i] += sigma[k] * v.grad_s[i];
+            }
+        }
+      for (unsigned int t = 0; t < 3; ++t)
+        if (omega[t] != 0.)
+          for (unsigned int i = 0; i < n; ++i)
+            grad[i] += omega[t] * depth[t].grad_G[i];
+      const Tensor<1, 3> w_nu({w[inu], w[inu + 1], w[inu + 2]});
+      for (unsigned int X = 0; X < 3; ++X)
+        {
+          const Tensor<1, 3> gX = transpose(dnu[X]) * w_nu;
+          for (unsigned int d = 0; d < 3; ++d)
+            grad[3 * (4 + X) + d] += gX[d];
+        }
+      if (!with_hessian)
+        return true;
+
+      // J: d(primitive)/d(coordinate)
+      std::array<Vec, 39> J;
+      for (unsigned int k = 0; k < m; ++k)
+        {
+          const VertexForm &v = form[k];
+          for (unsigned int d = 0; d < 4; ++d)
+            J[4 * k + d].fill(0.);
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              J[4 * k + d][3 * v.P1 + d] += 1. - v.s;
+              J[4 * k + d][3 * v.P2 + d] += v.s;
+            }
+          Vec &JG = J[4 * k + 3];
+          if (v.t1 < 3)
+            for (unsigned int i = 0; i < n; ++i)
+              JG[i] = (1. - v.s) * depth[v.t1].grad_G[i] +
+                      v.s * depth[v.t2].grad_G[i];
+          if (v.s_varies)
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                for (unsigned int d = 0; d < 3; ++d)
+                  J[4 * k + d][i] += (x[v.P2][d] - x[v.P1][d]) * v.grad_s[i];
+                JG[i] += (v.G2 - v.G1) * v.grad_s[i];
+              }
+        }
+      for (unsigned int q = 0; q < 3; ++q)
+        {
+          J[inu + q].fill(0.);
+          for (unsigned int X = 0; X < 3; ++X)
+            for (unsigned int d = 0; d < 3; ++d)
+              J[inu + q][3 * (4 + X) + d] = dnu[X][q][d];
+        }
+
+      // H = J^T HP J
+      Mat                &H = result.hessian;
+      std::array<Vec, 39> K; // HP J
+      for (unsigned int a = 0; a < np; ++a)
+        {
+          K[a].fill(0.);
+          for (unsigned int b = 0; b < np; ++b)
+            if (HP[a][b] != 0.)
+              for (unsigned int i = 0; i < n; ++i)
+                K[a][i] += HP[a][b] * J[b][i];
+        }
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = i; j < n; ++j)
+          {
+            double h = 0.;
+            for (unsigned int a = 0; a < np; ++a)
+              h += J[a][i] * K[a][j];
+            H[i][j] = H[j][i] = h;
+          }
+
+      // + sum_k (dW/dprimitive_k) Hess(primitive_k): the cut ratios s
+      for (unsigned int k = 0; k < m; ++k)
+        {
+          const VertexForm &v = form[k];
+          if (!v.s_varies)
+            continue;
+          // sigma Hess s
+          add_hessian(H, x, v.a, sigma[k] * v.s_a);
+          add_hessian(H, x, v.b, sigma[k] * v.s_b);
+          Vec ga{}, gb{};
+          add_gradient(ga, v.a, 1.);
+          add_gradient(gb, v.b, 1.);
+          add_symmetric_outer(H, ga, ga, 0.5 * sigma[k] * v.s_aa);
+          add_symmetric_outer(H, ga, gb, sigma[k] * v.s_ab);
+          add_symmetric_outer(H, gb, gb, 0.5 * sigma[k] * v.s_bb);
+          // sym(grad s (x) r), r = d sigma / d(coordinates) at fixed s
+          Vec          r{};
+          const double wG = w[4 * k + 3];
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              r[3 * v.P2 + d] += w[4 * k + d];
+              r[3 * v.P1 + d] -= w[4 * k + d];
+            }
+          if (v.t1 < 3)
+            for (unsigned int i = 0; i < n; ++i)
+              r[i] += wG * (depth[v.t2].grad_G[i] - depth[v.t1].grad_G[i]);
+          add_symmetric_outer(H, v.grad_s, r, 1.);
+        }
+      // + sum_t omega_t Hess G_t, G_t = N_t / V
+      for (unsigned int t = 0; t < 3; ++t)
+        {
+          if (omega[t] == 0.)
+            continue;
+          const VertexDepth &vd = depth[t];
+          const double       Vv = V.value;
+          for (unsigned int j = 0; j < 4; ++j)
+            add_hessian(H, x, vd.D[j], omega[t] * g[j] / Vv);
+          add_hessian(H, x, V, -omega[t] * vd.N / (Vv * Vv));
+          Vec gV{};
+          add_gradient(gV, V, 1.);
+          add_symmetric_outer(H, vd.grad_N, gV, -omega[t] / (Vv * Vv));
+          add_symmetric_outer(H, gV, gV, omega[t] * vd.N / (Vv * Vv * Vv));
+        }
+      // + Hess(w_nu . nu): with phi(N) = w_nu . N / |N|, p = dphi/dN,
+      // M^T (d2phi/dN2) M + the bilinear part p . (dE1 x dE2)
+      {
+        const Tensor<1, 3> p   = Pnu * w_nu;
+        const double       wn  = w_nu * nu;
+        Tensor<2, 3>       Phi = 3. * wn * outer_product(nu, nu) -
+                           outer_product(w_nu, nu) - outer_product(nu, w_nu);
+        for (unsigned int d = 0; d < 3; ++d)
+          Phi[d][d] -= wn;
+        Phi /= rT * rT;
+        const Tensor<2, 3> Bp = -cross_matrix(p);
+        for (unsigned int X = 0; X < 3; ++X)
+          for (unsigned int Y = 0; Y < 3; ++Y)
+            {
+              Tensor<2, 3> block = transpose(M[X]) * Phi * M[Y];
+              if ((Y + 3 - X) % 3 == 1)
+                block += Bp;
+              else if ((X + 3 - Y) % 3 == 1)
+                block -= Bp;
+              for (unsigned int a = 0; a < 3; ++a)
+                for (unsigned int b = 0; b < 3; ++b)
+                  H[3 * (4 + X) + a][3 * (4 + Y) + b] += block[a][b];
+            }
+      }
+      return true;
+    }
+  } // namespace Contact
+} // namespace TissueContact
