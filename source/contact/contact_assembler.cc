@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <tissue_contact/contact/contact_assembler.h>
 #include <tissue_contact/contact/material_depth.h>
@@ -352,65 +353,45 @@ namespace TissueContact
     double
     ContactAssembler::max_body_penetration(const Vector<double> &u) const
     {
+      double d_max = 0.;
+      for (const auto &[v, d] : body_penetrations(u))
+        d_max = std::max(d_max, d);
+      return d_max;
+    }
+
+
+    std::vector<std::pair<unsigned int, double>>
+    ContactAssembler::body_penetrations(const Vector<double> &u) const
+    {
       if (pairs.empty())
-        return 0.;
+        return {};
       const std::vector<Point<3>> x = positions(u);
       refit(x);
-      double d_max = 0.;
+      std::map<unsigned int, double> depth_of;
+      for (const auto &p : pairs)
+        for (unsigned int t = 0; t < triangles.size(); ++t)
+          if (triangle_body[t] == p.surface_body)
+            for (const unsigned int v : triangles[t])
+              depth_of.emplace(v, 0.);
       for_each_candidate(
         x,
         0.,
         [&](const unsigned int t, const unsigned int k, const BodyContact &) {
-          const std::array<Point<3>, 4> tet = {x[tets[k][0]],
-                                               x[tets[k][1]],
-                                               x[tets[k][2]],
-                                               x[tets[k][3]]};
+          const std::array<Point<3>, 4> tet = {
+            {x[tets[k][0]], x[tets[k][1]], x[tets[k][2]], x[tets[k][3]]}};
           for (const unsigned int v : triangles[t])
             {
-              const std::array<Point<3>, 3> point   = {x[v], x[v], x[v]};
+              const std::array<Point<3>, 3> point   = {{x[v], x[v], x[v]}};
               const auto                    polygon = intersect(tet, point);
               if (polygon.n_vertices == 0)
                 continue;
               double g = 0.;
               for (unsigned int j = 0; j < 4; ++j)
                 g += polygon.vertex[0].lambda[j] * depth[tets[k][j]];
-              d_max = std::max(d_max, g);
+              depth_of[v] = std::max(depth_of[v], g);
             }
         });
-      return d_max;
-    }
-
-
-    double
-    ContactAssembler::energy(const Vector<double> &u) const
-    {
-      double W = 0.;
-      for (unsigned int t = 0; t < triangles.size(); ++t)
-        {
-          const std::array<Point<3>, 3> tri = {position(triangles[t][0], u),
-                                               position(triangles[t][1], u),
-                                               position(triangles[t][2], u)};
-          for (const auto &o : obstacles)
-            if (o.bodies.empty() || o.bodies.count(triangle_body[t]) > 0)
-              W += obstacle_energy<double>(o.obstacle, tri, o.penalty);
-        }
-      if (!pairs.empty())
-        {
-          const std::vector<Point<3>> x = positions(u);
-          refit(x);
-          for_each_candidate(
-            x,
-            0.,
-            [&](const unsigned int t,
-                const unsigned int k,
-                const BodyContact &p) {
-              const auto [tet, tri, g] = pair_geometry(x, t, k);
-              W += p.point_collocation ?
-                     collocation_energy<double>(tet, tri, g, p.penalty) :
-                     penalty_energy<double>(tet, tri, g, p.penalty);
-            });
-        }
-      return W;
+      return {depth_of.begin(), depth_of.end()};
     }
 
 

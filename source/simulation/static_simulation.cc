@@ -67,7 +67,14 @@ namespace TissueContact
     if (!assembler.assemble(u, load_factor, R, K))
       return false;
     if (contact)
-      contact->assemble(u, R, K);
+      {
+        std::unique_ptr<TimerOutput::Scope> scope;
+        if (timer != nullptr)
+          scope =
+            std::make_unique<TimerOutput::Scope>(*timer,
+                                                 "assembly: contact part");
+        contact->assemble(u, R, K);
+      }
     return true;
   }
 
@@ -174,10 +181,13 @@ namespace TissueContact
     Solvers::SolveStatistics statistics;
     try
       {
-        statistics = solver.solve(*this, u, &timer);
+        this->timer = &timer;
+        statistics  = solver.solve(*this, u, &timer);
+        this->timer = nullptr;
       }
     catch (const std::exception &e)
       {
+        this->timer = nullptr;
         const std::string kept =
           p.output.write_vtu ?
             "; the converged increments are kept in " + vtu.pvd_file() :

@@ -5,6 +5,13 @@
 // versa). For penalty factors 1e3 and 1e4: the contact force carried from
 // the upper to the lower block equals the load, and the penetration falls
 // as 1/eps (two directions, each with pressure eps d: p = 2 eps d).
+// The contact patch test: the pressure field. With the area-integrated
+// penalty the pressure at a point of a contact surface is eps times its
+// depth inside the other body, per direction; the two flat surfaces overlap
+// by the same depth, so the pressure at a contact vertex is p_h = 2 eps d.
+// Printed: p_h / p over all contact vertices of both surfaces, and over
+// those at least 0.15 from the blocks' sides (the rim of a free-sided
+// patch carries a boundary layer).
 
 #include "../tests.h"
 
@@ -123,5 +130,29 @@ main(int argc, char **argv)
               << ", eps * penetration / p " << std::stod(eps) * d / load
               << std::setprecision(6) << ", Newton iterations "
               << stats.newton_iterations << std::endl;
+
+      const auto &vertices =
+        disc.dof_handler.get_triangulation().get_vertices();
+      for (const bool interior : {false, true})
+        {
+          double       sum = 0., lo = 1e300, hi = 0.;
+          unsigned int n = 0;
+          for (const auto &[v, depth] : c->body_penetrations(u))
+            {
+              const Point<3> &X = vertices[v];
+              if (interior && (std::min(X[0], 1. - X[0]) < 0.15 ||
+                               std::min(X[1], 1. - X[1]) < 0.15))
+                continue;
+              const double ratio = 2. * std::stod(eps) * depth / load;
+              sum += ratio;
+              lo = std::min(lo, ratio);
+              hi = std::max(hi, ratio);
+              ++n;
+            }
+          deallog << "  pressure 2 eps d / p at " << n
+                  << (interior ? " interior" : "") << " contact vertices: mean "
+                  << std::setprecision(3) << sum / n << ", min " << lo
+                  << ", max " << hi << std::setprecision(6) << std::endl;
+        }
     }
 }

@@ -81,6 +81,14 @@ namespace TissueContact
       double
       max_body_penetration(const Vector<double> &u) const;
 
+      /** For every vertex of a contact triangle of a paired surface body:
+       * (its vertex index, the material depth it reaches inside a paired
+       * body, zero if none). With the area-integrated penalty the contact
+       * pressure at a surface point is @f$\varepsilon_p@f$ times this depth
+       * (per direction of a pair). */
+      std::vector<std::pair<unsigned int, double>>
+      body_penetrations(const Vector<double> &u) const;
+
       /** Add the contact residual and, if @p K is not null, tangent. */
       void
       assemble(const Vector<double> &u,

@@ -103,9 +103,12 @@ namespace TissueContact
     Elasticity::Discretization                 disc;
     Elasticity::ElasticAssembler               assembler;
     std::unique_ptr<Contact::ContactAssembler> contact;
-    SparsityPattern                            sparsity;
-    std::vector<Scene::PrescribedDof>          prescribed;
-    Vector<double>                             u;
-    std::ostream                              &out;
+    /** The run's timer while run() is active: contact assembly is timed as
+     * a part of the assembly. */
+    TimerOutput                      *timer = nullptr;
+    SparsityPattern                   sparsity;
+    std::vector<Scene::PrescribedDof> prescribed;
+    Vector<double>                    u;
+    std::ostream                     &out;
   };
 } // namespace TissueContact
