@@ -282,19 +282,8 @@ namespace TissueContact
           PairKernel d;
           if (p.point_collocation)
             {
-              if (collocation_energy<double>(tet, tri, g, p.penalty) > 0.)
-                {
-                  const PairDerivatives ad = collocation_derivatives_ad(
-                    tet, tri, g, p.penalty, with_hessian);
-                  d.energy = ad.energy;
-                  for (unsigned int i = 0; i < 21; ++i)
-                    {
-                      d.gradient[i] = ad.gradient[i];
-                      for (unsigned int j = 0; with_hessian && j < 21; ++j)
-                        d.hessian[i][j] = ad.hessian(i, j);
-                    }
-                  f(t, k, d);
-                }
+              if (collocation_kernel(tet, tri, g, p.penalty, with_hessian, d))
+                f(t, k, d);
               return;
             }
           if (penalty_kernel(tet, tri, g, p.penalty, with_hessian, d))
@@ -393,6 +382,40 @@ namespace TissueContact
         });
       return {depth_of.begin(), depth_of.end()};
     }
+
+
+    double
+    ContactAssembler::energy(const Vector<double> &u) const
+    {
+      double W = 0.;
+      for (unsigned int t = 0; t < triangles.size(); ++t)
+        {
+          const std::array<Point<3>, 3> tri = {position(triangles[t][0], u),
+                                               position(triangles[t][1], u),
+                                               position(triangles[t][2], u)};
+          for (const auto &o : obstacles)
+            if (o.bodies.empty() || o.bodies.count(triangle_body[t]) > 0)
+              W += obstacle_energy<double>(o.obstacle, tri, o.penalty);
+        }
+      if (!pairs.empty())
+        {
+          const std::vector<Point<3>> x = positions(u);
+          refit(x);
+          for_each_candidate(
+            x,
+            0.,
+            [&](const unsigned int t,
+                const unsigned int k,
+                const BodyContact &p) {
+              const auto [tet, tri, g] = pair_geometry(x, t, k);
+              W += p.point_collocation ?
+                     collocation_energy<double>(tet, tri, g, p.penalty) :
+                     penalty_energy<double>(tet, tri, g, p.penalty);
+            });
+        }
+      return W;
+    }
+
 
 
     Tensor<1, 3>

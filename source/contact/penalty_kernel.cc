@@ -117,6 +117,50 @@ namespace TissueContact
         Vec                        grad_N, grad_G;
       };
 
+      /** The depth field at triangle vertex @p t (point 4 + t). */
+      VertexDepth
+      vertex_depth(const Points                &x,
+                   const Orientation           &V,
+                   const std::array<double, 4> &g,
+                   const unsigned int           t)
+      {
+        VertexDepth vd;
+        vd.N = 0.;
+        vd.grad_N.fill(0.);
+        for (unsigned int j = 0; j < 4; ++j)
+          {
+            std::array<unsigned int, 4> P = {{0, 1, 2, 3}};
+            P[j]                          = 4 + t;
+            vd.D[j]                       = orientation(x, P);
+            vd.N += g[j] * vd.D[j].value;
+            add_gradient(vd.grad_N, vd.D[j], g[j]);
+          }
+        vd.G = vd.N / V.value;
+        for (unsigned int i = 0; i < n; ++i)
+          vd.grad_G[i] = vd.grad_N[i] / V.value;
+        add_gradient(vd.grad_G, V, -vd.N / (V.value * V.value));
+        return vd;
+      }
+
+      /** H += omega Hess G_t, G_t = N_t / V (quotient rule). */
+      void
+      add_depth_hessian(Mat                         &H,
+                        const Points                &x,
+                        const Orientation           &V,
+                        const VertexDepth           &vd,
+                        const std::array<double, 4> &g,
+                        const double                 omega)
+      {
+        const double Vv = V.value;
+        for (unsigned int j = 0; j < 4; ++j)
+          add_hessian(H, x, vd.D[j], omega * g[j] / Vv);
+        add_hessian(H, x, V, -omega * vd.N / (Vv * Vv));
+        Vec gV{};
+        add_gradient(gV, V, 1.);
+        add_symmetric_outer(H, vd.grad_N, gV, -omega / (Vv * Vv));
+        add_symmetric_outer(H, gV, gV, omega * vd.N / (Vv * Vv * Vv));
+      }
+
       /** A polygon vertex in closed form: @f$x = (1-s)x_{P_1} + s
        * x_{P_2}@f$, @f$G = (1-s)G_1 + sG_2@f$, @f$s = a/(a-b)@f$ (a, b
        * orientations) unless @p s_varies is false (a triangle vertex, or a
@@ -182,26 +226,10 @@ namespace TissueContact
         {tet[0], tet[1], tet[2], tet[3], tri[0], tri[1], tri[2]}};
 
       // depth field at the triangle vertices (sec. 5.1, G_t)
-      const Orientation          V = orientation(x, {{0, 1, 2, 3}});
-      std::array<VertexDepth, 3> depth;
-      for (unsigned int t = 0; t < 3; ++t)
-        {
-          VertexDepth &vd = depth[t];
-          vd.N            = 0.;
-          vd.grad_N.fill(0.);
-          for (unsigned int j = 0; j < 4; ++j)
-            {
-              std::array<unsigned int, 4> P = {{0, 1, 2, 3}};
-              P[j]                          = 4 + t;
-              vd.D[j]                       = orientation(x, P);
-              vd.N += g[j] * vd.D[j].value;
-              add_gradient(vd.grad_N, vd.D[j], g[j]);
-            }
-          vd.G = vd.N / V.value;
-          for (unsigned int i = 0; i < n; ++i)
-            vd.grad_G[i] = vd.grad_N[i] / V.value;
-          add_gradient(vd.grad_G, V, -vd.N / (V.value * V.value));
-        }
+      const Orientation                V     = orientation(x, {{0, 1, 2, 3}});
+      const std::array<VertexDepth, 3> depth = {{vertex_depth(x, V, g, 0),
+                                                 vertex_depth(x, V, g, 1),
+                                                 vertex_depth(x, V, g, 2)}};
 
       // the polygon vertices in closed form, from their labels
       std::array<VertexForm, 9> form;
@@ -480,19 +508,8 @@ namespace TissueContact
         }
       // + sum_t omega_t Hess G_t, G_t = N_t / V
       for (unsigned int t = 0; t < 3; ++t)
-        {
-          if (omega[t] == 0.)
-            continue;
-          const VertexDepth &vd = depth[t];
-          const double       Vv = V.value;
-          for (unsigned int j = 0; j < 4; ++j)
-            add_hessian(H, x, vd.D[j], omega[t] * g[j] / Vv);
-          add_hessian(H, x, V, -omega[t] * vd.N / (Vv * Vv));
-          Vec gV{};
-          add_gradient(gV, V, 1.);
-          add_symmetric_outer(H, vd.grad_N, gV, -omega[t] / (Vv * Vv));
-          add_symmetric_outer(H, gV, gV, omega[t] * vd.N / (Vv * Vv * Vv));
-        }
+        if (omega[t] != 0.)
+          add_depth_hessian(H, x, V, depth[t], g, omega[t]);
       // + Hess(w_nu . nu): with phi(N) = w_nu . N / |N|, p = dphi/dN,
       // M^T (d2phi/dN2) M + the bilinear part p . (dE1 x dE2)
       {
@@ -517,6 +534,111 @@ namespace TissueContact
                   H[3 * (4 + X) + a][3 * (4 + Y) + b] += block[a][b];
             }
       }
+      return true;
+    }
+
+
+    bool
+    collocation_kernel(const std::array<Point<3>, 4> &tet,
+                       const std::array<Point<3>, 3> &tri,
+                       const std::array<double, 4>   &g,
+                       const double                   eps_p,
+                       const bool                     with_hessian,
+                       PairKernel                    &result)
+    {
+      const Points x = {
+        {tet[0], tet[1], tet[2], tet[3], tri[0], tri[1], tri[2]}};
+      const Orientation V = orientation(x, {{0, 1, 2, 3}});
+      // W = c A_T sum_k G_k^2 over the vertices inside, c = eps_p / 6
+      const double        c = eps_p / 6.;
+      std::array<bool, 3> inside{};
+      bool                any = false;
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          const std::array<Point<3>, 3> point = {{tri[k], tri[k], tri[k]}};
+          inside[k] = intersect(tet, point).n_vertices > 0;
+          any       = any || inside[k];
+        }
+      if (!any)
+        return false;
+      // A_T = |N_T| / 2 and its derivatives in the triangle vertices
+      const Tensor<1, 3>          E1 = tri[1] - tri[0], E2 = tri[2] - tri[0];
+      const Tensor<1, 3>          NT = cross_product_3d(E1, E2);
+      const double                rT = NT.norm();
+      const Tensor<1, 3>          nu = NT / rT;
+      const double                A  = 0.5 * rT;
+      std::array<Tensor<2, 3>, 3> M;
+      M[1] = -cross_matrix(E2);
+      M[2] = cross_matrix(E1);
+      M[0] = -(M[1] + M[2]);
+      Vec grad_A{};
+      for (unsigned int X = 0; X < 3; ++X)
+        {
+          const Tensor<1, 3> gX = 0.5 * (transpose(M[X]) * nu);
+          for (unsigned int d = 0; d < 3; ++d)
+            grad_A[3 * (4 + X) + d] = gX[d];
+        }
+
+      double S = 0.; // sum of G_k^2 over the vertices inside, G_k > 0
+      Vec    grad_S{};
+      std::array<VertexDepth, 3> depth;
+      std::array<bool, 3>        active{};
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          if (!inside[k])
+            continue;
+          depth[k] = vertex_depth(x, V, g, k);
+          if (!(depth[k].G > 0.))
+            continue;
+          active[k] = true;
+          S += depth[k].G * depth[k].G;
+          for (unsigned int i = 0; i < n; ++i)
+            grad_S[i] += 2. * depth[k].G * depth[k].grad_G[i];
+        }
+      if (!(S > 0.))
+        return false;
+      result.energy = c * A * S;
+      for (unsigned int i = 0; i < n; ++i)
+        result.gradient[i] = c * (S * grad_A[i] + A * grad_S[i]);
+      if (!with_hessian)
+        return true;
+
+      // c (S Hess A + grad A (x) grad S + grad S (x) grad A + A Hess S)
+      Mat &H = result.hessian;
+      for (auto &row : H)
+        row.fill(0.);
+      {
+        // Hess |N_T| = M^T (I - nu nu^T) M / |N_T| + bilinear part of N_T
+        // weighted by nu; A = |N_T| / 2
+        Tensor<2, 3> P = -outer_product(nu, nu);
+        for (unsigned int d = 0; d < 3; ++d)
+          P[d][d] += 1.;
+        const Tensor<2, 3> Bn = -cross_matrix(nu);
+        for (unsigned int X = 0; X < 3; ++X)
+          for (unsigned int Y = 0; Y < 3; ++Y)
+            {
+              Tensor<2, 3> block = transpose(M[X]) * P * M[Y] / rT;
+              if ((Y + 3 - X) % 3 == 1)
+                block += Bn;
+              else if ((X + 3 - Y) % 3 == 1)
+                block -= Bn;
+              for (unsigned int a = 0; a < 3; ++a)
+                for (unsigned int b = 0; b < 3; ++b)
+                  H[3 * (4 + X) + a][3 * (4 + Y) + b] +=
+                    c * S * 0.5 * block[a][b];
+            }
+      }
+      add_symmetric_outer(H, grad_A, grad_S, c);
+      // Hess S = sum_k 2 (grad G_k (x) grad G_k + G_k Hess G_k)
+      for (unsigned int k = 0; k < 3; ++k)
+        if (active[k])
+          {
+            add_symmetric_outer(H,
+                                depth[k].grad_G,
+                                depth[k].grad_G,
+                                2. * c * A * 0.5);
+            add_depth_hessian(H, x, V, depth[k], g, 2. * c * A * depth[k].G);
+          }
       return true;
     }
   } // namespace Contact

@@ -79,6 +79,15 @@ namespace TissueContact
   }
 
 
+  double
+  StaticSimulation::energy(const Vector<double> &u,
+                           const double          load_factor) const
+  {
+    const double W = assembler.energy(u, load_factor);
+    return contact ? W + contact->energy(u) : W;
+  }
+
+
   std::map<types::global_dof_index, double>
   StaticSimulation::prescribed_values(const double load_factor) const
   {
@@ -115,10 +124,12 @@ namespace TissueContact
 
 
   Solvers::SolveStatistics
-  StaticSimulation::solve_quietly()
+  StaticSimulation::solve_quietly(
+    const std::function<void(const Solvers::IterationInfo &)> &on_iteration)
   {
     Solvers::IncrementalNewtonSolver solver(scene.parameters.solver);
-    u = 0.;
+    solver.on_iteration = on_iteration;
+    u                   = 0.;
     return solver.solve(*this, u);
   }
 

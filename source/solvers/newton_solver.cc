@@ -65,6 +65,14 @@ namespace TissueContact
                         "LOOP 3: halve the Newton step at most this often "
                         "looking for a step with no inverted element and a "
                         "smaller residual.");
+      prm.declare_entry(
+        "Line search",
+        "residual",
+        Patterns::Selection("residual|energy"),
+        "What a line-search step must decrease: the residual norm, or the "
+        "potential energy (Armijo; contact and other nonconvex problems, "
+        "falling back to the residual where the energy change is at rounding "
+        "level or the step is not a descent direction).");
       prm.declare_entry("Quasi-viscosity",
                         "false",
                         Patterns::Bool(),
@@ -108,6 +116,7 @@ namespace TissueContact
       residual_tolerance  = prm.get_double("Residual tolerance");
       absolute_tolerance  = prm.get_double("Absolute tolerance");
       max_halvings        = prm.get_integer("Maximum line search halvings");
+      energy_line_search  = prm.get("Line search") == "energy";
       quasi_viscosity     = prm.get_bool("Quasi-viscosity");
       viscosity_factor    = prm.get_double("Viscosity factor");
       viscosity_time_step = prm.get_double("Viscosity time step");
@@ -236,13 +245,44 @@ namespace TissueContact
             info.linear_iterations = linear_solver.solve(K, du, rhs);
           }
 
-          // LOOP 3: line search
-          double s        = 1.;
-          bool   accepted = false;
+          // LOOP 3: line search. Energy merit (Armijo) when asked for and
+          // available, once the prescribed values are met; residual merit
+          // otherwise, or where the energy change is at rounding level, or
+          // if du is not a descent direction (an indefinite tangent)
+          double E0 = std::numeric_limits<double>::quiet_NaN(), slope = 0.;
+          if (parameters.energy_line_search && gap_norm == 0.)
+            {
+              E0 = problem.energy(u, load_factor);
+              for (types::global_dof_index i = 0; i < n; ++i)
+                if (!prescribed[i])
+                  slope += R[i] * du[i];
+            }
+          const bool use_energy = std::isfinite(E0) && slope < 0.;
+          double     s          = 1.;
+          bool       accepted   = false;
           for (unsigned int h = 0; h <= parameters.max_halvings; ++h, s *= 0.5)
             {
               u_trial = u;
               u_trial.add(s, du);
+              if (use_energy)
+                {
+                  double E;
+                  {
+                    const auto scope = section("assembly");
+                    E                = problem.energy(u_trial, load_factor);
+                  }
+                  if (!std::isfinite(E))
+                    continue; // an inverted element
+                  if (std::abs(E - E0) > 1e-12 * std::abs(E0))
+                    {
+                      if (E <= E0 + 1e-4 * s * slope)
+                        {
+                          accepted = true;
+                          break;
+                        }
+                      continue;
+                    }
+                }
               bool trial_valid;
               {
                 const auto scope = section("assembly");

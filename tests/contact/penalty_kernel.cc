@@ -14,6 +14,7 @@
 
 #include <tissue_contact/contact/penalty_energy.h>
 #include <tissue_contact/contact/penalty_kernel.h>
+#include <tissue_contact/contact/point_collocation.h>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -424,6 +425,42 @@ namespace
         }
   }
 
+  /** The hand-derived point-collocation kernel against its AD reference. */
+  void
+  collocation_against_ad()
+  {
+    double       err_g = 0., err_h = 0., err_e = 0.;
+    unsigned int n_cut = 0;
+    while (n_cut < 300)
+      {
+        const Tet  tet = random_tet();
+        const Tri  tri = {random_point(0.8),
+                          random_point(0.8),
+                          random_point(0.8)};
+        const auto g   = random_depths();
+        const auto ad  = Contact::collocation_derivatives_ad(tet, tri, g, 10.);
+        Contact::PairKernel k;
+        const bool hit = Contact::collocation_kernel(tet, tri, g, 10., true, k);
+        if (!(ad.energy > 0.) && !hit)
+          continue;
+        ++n_cut;
+        err_e     = std::max(err_e, std::abs(k.energy - ad.energy) / ad.energy);
+        double dg = 0., dh = 0.;
+        for (unsigned int i = 0; i < 21; ++i)
+          {
+            dg += std::pow(k.gradient[i] - ad.gradient[i], 2);
+            for (unsigned int j = 0; j < 21; ++j)
+              dh += std::pow(k.hessian[i][j] - ad.hessian(i, j), 2);
+          }
+        err_g = std::max(err_g, std::sqrt(dg) / ad.gradient.l2_norm());
+        err_h = std::max(err_h, std::sqrt(dh) / ad.hessian.frobenius_norm());
+      }
+    deallog << "point collocation, hand kernel vs AD (" << n_cut
+            << " pairs): energy " << error_bound(err_e, -12) << ", gradient "
+            << error_bound(err_g, -10) << ", Hessian " << error_bound(err_h, -8)
+            << std::endl;
+  }
+
   void
   degenerate_positions()
   {
@@ -499,5 +536,6 @@ main()
   area_against_sampling();
   derivatives_against_fd();
   hand_kernel_against_ad();
+  collocation_against_ad();
   degenerate_positions();
 }

@@ -44,5 +44,21 @@ namespace TissueContact
                    const double                   eps_p,
                    const bool                     with_hessian,
                    PairKernel                    &result);
+
+    /**
+     * The point-collocation energy (point_collocation.h) with its exact
+     * gradient and Hessian, derived by hand:
+     * @f$W = c\,A_T\sum_k G_k^2@f$ over the triangle vertices inside the
+     * tetrahedron with positive depth, @f$c = \varepsilon_p/6@f$,
+     * @f$G_k = N_k/V@f$ as in penalty_kernel(). Tested against
+     * collocation_derivatives_ad(). Returns false when the energy is zero.
+     */
+    bool
+    collocation_kernel(const std::array<Point<3>, 4> &tet,
+                       const std::array<Point<3>, 3> &tri,
+                       const std::array<double, 4>   &g,
+                       const double                   eps_p,
+                       const bool                     with_hessian,
+                       PairKernel                    &result);
   } // namespace Contact
 } // namespace TissueContact

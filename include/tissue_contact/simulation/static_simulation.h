@@ -32,9 +32,12 @@ namespace TissueContact
     Solvers::SolveStatistics
     run();
 
-    /** Solve without writing any file (for tests). */
+    /** Solve without writing any file (for tests); @p on_iteration, if
+     * given, sees every Newton iteration. On failure the exception
+     * propagates and solution() holds the last converged increment. */
     Solvers::SolveStatistics
-    solve_quietly();
+    solve_quietly(const std::function<void(const Solvers::IterationInfo &)>
+                    &on_iteration = {});
 
     const Vector<double> &
     solution() const
@@ -91,6 +94,9 @@ namespace TissueContact
     quasi_viscosity_diagonal(const double eta) const override;
     std::vector<std::vector<bool>>
     constant_modes() const override;
+    /** Elastic potential (with the loads' work) plus contact energy. */
+    double
+    energy(const Vector<double> &u, const double load_factor) const override;
 
   private:
     /** sparsity = the FE pattern + the contact couplings at @p u (with a

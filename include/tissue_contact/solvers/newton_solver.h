@@ -67,6 +67,7 @@ namespace TissueContact
         double       residual_tolerance  = 1e-8;
         double       absolute_tolerance  = 1e-12;
         unsigned int max_halvings        = 20;
+        bool         energy_line_search  = false;
         bool         quasi_viscosity     = false;
         double       viscosity_factor    = 0.1;
         double       viscosity_time_step = 1.;

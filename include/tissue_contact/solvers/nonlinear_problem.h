@@ -3,6 +3,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
+#include <limits>
 #include <map>
 
 namespace TissueContact
@@ -68,6 +69,16 @@ namespace TissueContact
       quasi_viscosity_diagonal(const double eta) const = 0;
 
       /** Per component, the DoFs of that component (AMG near-null space). */
+      /** The potential energy whose gradient assemble() computes, for the
+       * energy line search; NaN (the default) if the problem has none. */
+      virtual double
+      energy(const Vector<double> &u, const double load_factor) const
+      {
+        (void)u;
+        (void)load_factor;
+        return std::numeric_limits<double>::quiet_NaN();
+      }
+
       virtual std::vector<std::vector<bool>>
       constant_modes() const
       {
