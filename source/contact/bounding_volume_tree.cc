@@ -77,6 +77,21 @@ namespace TissueContact
     }
 
 
+    double
+    BoundingVolumeTree::cost() const
+    {
+      const auto area = [](const BoundingBox<3> &b) {
+        const Tensor<1, 3> e =
+          b.get_boundary_points().second - b.get_boundary_points().first;
+        return 2. * (e[0] * e[1] + e[1] * e[2] + e[2] * e[0]);
+      };
+      double inner = 0., leaves = 0.;
+      for (const Node &n : nodes)
+        (n.left >= 0 ? inner : leaves) += area(n.box);
+      return leaves > 0. ? inner / leaves : 0.;
+    }
+
+
     void
     BoundingVolumeTree::refit(const std::vector<BoundingBox<3>> &boxes)
     {

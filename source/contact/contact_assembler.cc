@@ -64,7 +64,13 @@ namespace TissueContact
       for (const auto &t : tets)
         boxes.emplace_back(
           std::vector<Point<3>>{X[t[0]], X[t[1]], X[t[2]], X[t[3]]});
-      tree = std::make_unique<BoundingVolumeTree>(boxes);
+      tree        = std::make_unique<BoundingVolumeTree>(boxes);
+      x_at_build  = X;
+      double size = 0.;
+      for (const auto &b : boxes)
+        size += b.get_boundary_points().first.distance(
+          b.get_boundary_points().second);
+      rebuild_distance = boxes.empty() ? 0. : size / boxes.size();
     }
 
 
@@ -76,7 +82,22 @@ namespace TissueContact
       for (const auto &t : tets)
         boxes.emplace_back(
           std::vector<Point<3>>{x[t[0]], x[t[1]], x[t[2]], x[t[3]]});
-      tree->refit(boxes);
+      // a refitted tree stays exact but degrades when objects that were
+      // neighbours drift apart: rebuild once a vertex has moved farther than
+      // the mean tetrahedron size since the last build (a rebuild costs
+      // about 25 refits, both far below one assembly)
+      double moved = 0.;
+      for (const auto &t : tets)
+        for (const unsigned int v : t)
+          moved = std::max(moved, x[v].distance_square(x_at_build[v]));
+      if (std::sqrt(moved) > rebuild_distance)
+        {
+          tree       = std::make_unique<BoundingVolumeTree>(boxes);
+          x_at_build = x;
+          ++n_rebuilds;
+        }
+      else
+        tree->refit(boxes);
     }
 
 

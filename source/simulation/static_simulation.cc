@@ -223,7 +223,9 @@ namespace TissueContact
     if (contact && !p.contact.pairs.empty())
       out << "  penetration (largest material depth reached by a contact "
              "vertex inside a paired body): "
-          << contact->max_body_penetration(u) << "\n";
+          << contact->max_body_penetration(u) << "\n"
+          << "  contact tree: rebuilt " << contact->n_tree_rebuilds()
+          << " times (a vertex moved more than the mean element size)\n";
     if (p.output.write_vtu)
       out << "  results: " << vtu.pvd_file() << " (open in ParaView)\n";
     return statistics;

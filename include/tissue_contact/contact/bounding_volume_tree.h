@@ -17,7 +17,10 @@ namespace TissueContact
      * box centers along the node's largest extent; refitted bottom-up when
      * the objects move (the topology is kept, only the boxes grow or
      * shrink), which is cheaper than a rebuild and exact, though the tree
-     * degrades when the motion is large — rebuild then (per load step).
+     * may degrade when the motion is large (objects that were neighbours
+     * drift apart); cost() measures it. The contact assembler rebuilds the
+     * tree when a vertex has moved farther than the mean tetrahedron size
+     * since the last build.
      */
     class BoundingVolumeTree
     {
@@ -45,6 +48,13 @@ namespace TissueContact
       nearest(
         const Point<3>                                    &p,
         const std::function<double(unsigned int, double)> &distance) const;
+
+      /** The summed surface area of the inner nodes' boxes (the expected
+       * work of a query is proportional to it: the surface area heuristic)
+       * divided by that of the objects' boxes, so that a uniform stretch
+       * of the objects leaves it unchanged. */
+      double
+      cost() const;
 
       /** Number of tree nodes (2 n_objects - 1). */
       unsigned int

@@ -69,6 +69,14 @@ namespace TissueContact
       has_couplings(const Vector<double>  &u,
                     const SparsityPattern &pattern) const;
 
+      /** How often the tree was rebuilt (a vertex moved farther than the
+       * mean tetrahedron size since the last build). */
+      unsigned int
+      n_tree_rebuilds() const
+      {
+        return n_rebuilds;
+      }
+
       /** Material depth at every vertex. */
       const std::vector<double> &
       vertex_depth() const
@@ -127,6 +135,9 @@ namespace TissueContact
       std::vector<std::array<unsigned int, 4>>    tets;  // vertex indices
       std::vector<types::material_id>             tet_body;
       mutable std::unique_ptr<BoundingVolumeTree> tree; // over tets
+      mutable unsigned int                        n_rebuilds = 0;
+      mutable std::vector<Point<3>> x_at_build; // positions at the build
+      double rebuild_distance = 0.;             // mean tetrahedron box diagonal
 
       /** Refit the tree to the positions @p x of the vertices. */
       void
