@@ -343,19 +343,30 @@ namespace TissueContact
         return true;
       const std::vector<Point<3>> x = positions(u);
       refit(x);
+      // only pairs the assembly will add (nonzero energy) need couplings;
+      // add_couplings() adds whole 3 x 3 vertex blocks, so one entry per
+      // vertex pair tells
       bool all = true;
-      for_each_candidate(x,
-                         0.,
-                         [&](const unsigned int t,
-                             const unsigned int k,
-                             const BodyContact &) {
-                           if (!all)
-                             return;
-                           const auto dofs = pair_dofs(t, k);
-                           for (const auto i : dofs)
-                             for (const auto j : dofs)
-                               all = all && pattern.exists(i, j);
-                         });
+      for_each_candidate(
+        x,
+        0.,
+        [&](const unsigned int t, const unsigned int k, const BodyContact &p) {
+          if (!all)
+            return;
+          const auto [tet, tri, g] = pair_geometry(x, t, k);
+          if (*std::max_element(g.begin(), g.end()) <= 0.)
+            return;
+          const bool active =
+            p.point_collocation ?
+              collocation_energy<double>(tet, tri, g, p.penalty) > 0. :
+              penalty_energy<double>(tet, tri, g, p.penalty) > 0.;
+          if (!active)
+            return;
+          const auto dofs = pair_dofs(t, k);
+          for (unsigned int a = 0; a < 7 && all; ++a)
+            for (unsigned int b = 0; b < 7; ++b)
+              all = all && pattern.exists(dofs[3 * a], dofs[3 * b]);
+        });
       return all;
     }
 

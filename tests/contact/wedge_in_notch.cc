@@ -99,10 +99,17 @@ main(int argc, char **argv)
           }
         const double d =
           sim.contact_assembler()->max_body_penetration(sim.solution());
+        // a failing run's iteration counts depend on rounding (it
+        // chatters until the increment is cut to the minimum): print a bound
         deallog << "eps " << std::setw(4) << eps << ", " << std::setw(17)
-                << method << ": max penetration (last converged state) "
-                << std::setprecision(3) << d << std::setprecision(6) << ", "
-                << total << " Newton iterations, residual grew in " << growths
-                << ", " << outcome << std::endl;
+                << method << ": ";
+        if (outcome.rfind("FAILED", 0) == 0)
+          deallog << (total >= 200 ? "more than 200" : "fewer than 200")
+                  << " Newton iterations, " << outcome << std::endl;
+        else
+          deallog << "max penetration " << std::setprecision(3) << d
+                  << std::setprecision(6) << ", " << total
+                  << " Newton iterations, residual grew in " << growths << ", "
+                  << outcome << std::endl;
       }
 }

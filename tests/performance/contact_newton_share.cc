@@ -26,7 +26,7 @@ using namespace TissueContact;
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
   const std::string                source(SOURCE_DIR);
   std::ifstream                    in(source + "/prm/stacked_blocks.prm");
   std::stringstream                text;
