@@ -1,5 +1,7 @@
 #include <algorithm>
 #include <cmath>
+#include <deal.II/base/multithread_info.h>
+#include <deal.II/base/work_stream.h>
 #include <map>
 #include <numeric>
 #include <tissue_contact/contact/contact_assembler.h>
@@ -108,32 +110,46 @@ namespace TissueContact
                                          const F                     &f) const
     {
       for (unsigned int t = 0; t < triangles.size(); ++t)
-        {
-          const auto &tv                = triangles[t];
-          bool        surface_of_a_pair = false;
-          for (const auto &p : pairs)
-            surface_of_a_pair =
-              surface_of_a_pair || p.surface_body == triangle_body[t];
-          if (!surface_of_a_pair)
-            continue;
-          BoundingBox<3> box(
-            std::vector<Point<3>>{x[tv[0]], x[tv[1]], x[tv[2]]});
-          if (margin > 0.)
-            box.extend(margin);
-          tree->for_each_overlap(box, [&](const unsigned int k) {
-            const auto &kv = tets[k];
-            // a triangle that is a face of the tetrahedron
-            unsigned int shared = 0;
-            for (const unsigned int a : tv)
-              shared += std::count(kv.begin(), kv.end(), a);
-            if (shared == 3)
-              return;
-            for (const auto &p : pairs)
-              if (p.surface_body == triangle_body[t] &&
-                  p.volume_body == tet_body[k])
-                f(t, k, p);
-          });
-        }
+        for_each_candidate_of(t, x, margin, f);
+    }
+
+
+    bool
+    ContactAssembler::surface_of_a_pair(const unsigned int t) const
+    {
+      for (const auto &p : pairs)
+        if (p.surface_body == triangle_body[t])
+          return true;
+      return false;
+    }
+
+
+    template <typename F>
+    void
+    ContactAssembler::for_each_candidate_of(const unsigned int           t,
+                                            const std::vector<Point<3>> &x,
+                                            const double                 margin,
+                                            const F &f) const
+    {
+      if (!surface_of_a_pair(t))
+        return;
+      const auto    &tv = triangles[t];
+      BoundingBox<3> box(std::vector<Point<3>>{x[tv[0]], x[tv[1]], x[tv[2]]});
+      if (margin > 0.)
+        box.extend(margin);
+      tree->for_each_overlap(box, [&](const unsigned int k) {
+        const auto &kv = tets[k];
+        // a triangle that is a face of the tetrahedron
+        unsigned int shared = 0;
+        for (const unsigned int a : tv)
+          shared += std::count(kv.begin(), kv.end(), a);
+        if (shared == 3)
+          return;
+        for (const auto &p : pairs)
+          if (p.surface_body == triangle_body[t] &&
+              p.volume_body == tet_body[k])
+            f(t, k, p);
+      });
     }
 
 
@@ -291,25 +307,69 @@ namespace TissueContact
         return;
       const std::vector<Point<3>> x = positions(u);
       refit(x);
-      for_each_candidate(
-        x,
-        0.,
-        [&](const unsigned int t, const unsigned int k, const BodyContact &p) {
-          const auto [tet, tri, g] = pair_geometry(x, t, k);
-          // cheap rejection before differentiating: zero energy has zero
-          // gradient (the energy is nonnegative)
-          if (*std::max_element(g.begin(), g.end()) <= 0.)
-            return;
-          PairKernel d;
-          if (p.point_collocation)
-            {
-              if (collocation_kernel(tet, tri, g, p.penalty, with_hessian, d))
-                f(t, k, d);
-              return;
-            }
-          if (penalty_kernel(tet, tri, g, p.penalty, with_hessian, d))
-            f(t, k, d);
-        });
+      // the pairs of each contact triangle are evaluated in parallel (the
+      // tree is only read); f sees them serially, in the order of a serial
+      // loop, so sums are reproducible
+      std::vector<unsigned int> surface_triangles;
+      for (unsigned int t = 0; t < triangles.size(); ++t)
+        if (surface_of_a_pair(t))
+          surface_triangles.push_back(t);
+      struct Result
+      {
+        unsigned int t = 0, k = 0;
+        PairKernel   d;
+      };
+      struct Copy
+      {
+        std::vector<Result> results;
+        unsigned int        n = 0;
+      };
+      struct Scratch
+      {
+      };
+      WorkStream::run(
+        surface_triangles.cbegin(),
+        surface_triangles.cend(),
+        [&](const std::vector<unsigned int>::const_iterator &it,
+            Scratch &,
+            Copy &c) {
+          c.n = 0;
+          for_each_candidate_of(
+            *it,
+            x,
+            0.,
+            [&](const unsigned int t,
+                const unsigned int k,
+                const BodyContact &p) {
+              const auto [tet, tri, g] = pair_geometry(x, t, k);
+              // cheap rejection before differentiating: zero energy has
+              // zero gradient (the energy is nonnegative)
+              if (*std::max_element(g.begin(), g.end()) <= 0.)
+                return;
+              if (c.results.size() == c.n)
+                c.results.emplace_back();
+              Result    &r = c.results[c.n];
+              const bool hit =
+                p.point_collocation ?
+                  collocation_kernel(
+                    tet, tri, g, p.penalty, with_hessian, r.d) :
+                  penalty_kernel(tet, tri, g, p.penalty, with_hessian, r.d);
+              if (hit)
+                {
+                  r.t = t;
+                  r.k = k;
+                  ++c.n;
+                }
+            });
+        },
+        [&](const Copy &c) {
+          for (unsigned int i = 0; i < c.n; ++i)
+            f(c.results[i].t, c.results[i].k, c.results[i].d);
+        },
+        Scratch(),
+        Copy(),
+        MultithreadInfo::n_threads(),
+        8);
     }
 
 

@@ -152,6 +152,16 @@ namespace TissueContact
       for_each_candidate(const std::vector<Point<3>> &x,
                          const double                 margin,
                          const F                     &f) const;
+      /** for_each_candidate() for one triangle @p t. */
+      template <typename F>
+      void
+      for_each_candidate_of(const unsigned int           t,
+                            const std::vector<Point<3>> &x,
+                            const double                 margin,
+                            const F                     &f) const;
+      /** Whether triangle @p t belongs to the surface body of a pair. */
+      bool
+      surface_of_a_pair(const unsigned int t) const;
       /** The positions and depths of triangle t and tetrahedron k. */
       struct PairGeometry
       {
