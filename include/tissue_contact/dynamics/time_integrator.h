@@ -1,0 +1,124 @@
+#pragma once
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <functional>
+#include <memory>
+#include <string>
+#include <tissue_contact/solvers/newton_solver.h>
+#include <tissue_contact/solvers/nonlinear_problem.h>
+
+namespace TissueContact
+{
+  namespace Dynamics
+  {
+    using namespace dealii;
+
+    /** The time integration schemes (doc/theory/06-dynamics.md). */
+    enum class Scheme
+    {
+      implicit_euler,     ///< backward Euler in velocity form
+      newmark,            ///< Newmark (default: average acceleration)
+      central_difference, ///< explicit, lumped mass
+    };
+
+    /** Displacement, velocity and acceleration at time t. */
+    struct State
+    {
+      Vector<double> u, v, a;
+      double         t = 0.;
+    };
+
+    /**
+     * Time integration of @f$M\ddot u + C\dot u + R(u) = 0@f$ for a
+     * NonlinearProblem whose assemble() gives the static residual
+     * @f$R(u) = f_{int}(u) - f_{ext}@f$ (at load factor 1) and its tangent,
+     * with the mass M (consistent, or lumped: a diagonal) and Rayleigh
+     * damping @f$C = \alpha M + \beta K_0@f$ (K_0: the tangent at the
+     * initial state). The implicit schemes solve each step with the
+     * project's Newton solver (line search, prescribed DoFs, contact) on
+     * the effective residual; the explicit scheme needs the residual only.
+     */
+    class TimeIntegrator
+    {
+    public:
+      struct Parameters
+      {
+        Scheme scheme         = Scheme::newmark;
+        double beta           = 0.25; ///< Newmark beta
+        double gamma          = 0.5;  ///< Newmark gamma
+        double rayleigh_alpha = 0., rayleigh_beta = 0.;
+        /** Growth factor of the step after a step that took at most
+         * easy_iterations Newton iterations; the step is halved after a
+         * failed one, down to minimum_step. */
+        double       growth_factor   = 1.;
+        unsigned int easy_iterations = 3;
+        double       maximum_step    = 1e300;
+        double       minimum_step    = 1e-12;
+        /** The explicit scheme stops (with an error) when the energy grows
+         * beyond this factor of its initial value plus the work done. */
+        double                                       blow_up_factor = 1e6;
+        Solvers::IncrementalNewtonSolver::Parameters newton;
+      };
+
+      /** @p mass_consistent or @p mass_lumped (at least one; the explicit
+       * scheme needs the lumped one). */
+      TimeIntegrator(const Parameters           &parameters,
+                     Solvers::NonlinearProblem  &problem,
+                     const SparseMatrix<double> *mass_consistent,
+                     const Vector<double>       *mass_lumped);
+
+      /** Set @p s.a from the equation of motion at @p s.u, @p s.v (the
+       * acceleration the implicit schemes start from). */
+      void
+      initialize(State &s);
+
+      /**
+       * Advance @p s by one step of size @p dt (the implicit schemes cut
+       * it back and retry from @p s while Newton fails). Returns the step
+       * actually taken; @p next_dt gets the suggested next step. Throws an
+       * ExcMessage naming the time and the reason when the step falls
+       * below the minimum, or when the explicit scheme blows up.
+       */
+      double
+      step(State &s, const double dt, double &next_dt);
+
+      /** @f$\frac12 v^T M v@f$ */
+      double
+      kinetic_energy(const State &s) const;
+
+      /** Apply the mass to a vector: @p Mx = M x (lumped if that is all
+       * there is). */
+      void
+      mass_vmult(Vector<double> &Mx, const Vector<double> &x) const;
+
+      /** Newton iterations of the last implicit step. */
+      unsigned int last_iterations = 0;
+
+      const Parameters parameters;
+
+    private:
+      Solvers::NonlinearProblem  &problem;
+      const SparseMatrix<double> *M;
+      const Vector<double>       *M_lumped;
+      /** beta K_0 for the Rayleigh damping, with its own pattern. */
+      SparsityPattern      damping_pattern;
+      SparseMatrix<double> K0;
+      double               reference_energy = 0.;
+
+      /** @f$C x@f$ */
+      void
+      damping_vmult(Vector<double> &Cx, const Vector<double> &x) const;
+
+      double
+      implicit_step(State &s, const double dt);
+      void
+      explicit_step(State &s, const double dt);
+    };
+
+    /** Scheme from its prm name: "implicit Euler", "Newmark",
+     * "central difference". */
+    Scheme
+    scheme_from_string(const std::string &name);
+  } // namespace Dynamics
+} // namespace TissueContact

@@ -1,0 +1,407 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/numerics/matrix_tools.h>
+#include <limits>
+#include <sstream>
+#include <tissue_contact/dynamics/time_integrator.h>
+
+// Symbols follow doc/theory/06-dynamics.md.
+
+namespace TissueContact
+{
+  namespace Dynamics
+  {
+    namespace
+    {
+      /** K += c A, entry by entry (K's pattern contains A's). */
+      void
+      add_entries(SparseMatrix<double>       &K,
+                  const double                c,
+                  const SparseMatrix<double> &A)
+      {
+        if (c == 0.)
+          return;
+        for (auto it = A.begin(); it != A.end(); ++it)
+          K.add(it->row(), it->column(), c * it->value());
+      }
+
+      /**
+       * The residual of one implicit step as a NonlinearProblem in the
+       * end-of-step displacement u: @f$G(u) = M a(u) + C v(u) + R(u)@f$
+       * with the scheme's a(u), v(u), and the tangent
+       * @f$K(u) + c_M M + c_C C@f$.
+       */
+      class EffectiveProblem : public Solvers::NonlinearProblem
+      {
+      public:
+        EffectiveProblem(const TimeIntegrator       &integrator,
+                         Solvers::NonlinearProblem  &problem,
+                         const SparseMatrix<double> *M,
+                         const Vector<double>       *M_lumped,
+                         const SparseMatrix<double> &K0,
+                         const State                &s,
+                         const double                dt)
+          : integrator(integrator)
+          , problem(problem)
+          , M(M)
+          , M_lumped(M_lumped)
+          , K0(K0)
+          , s(s)
+          , dt(dt)
+        {
+          const auto &p = integrator.parameters;
+          if (p.scheme == Scheme::newmark)
+            {
+              c_M = 1. / (p.beta * dt * dt);
+              c_C = p.gamma / (p.beta * dt);
+            }
+          else
+            {
+              c_M = 1. / (dt * dt);
+              c_C = 1. / dt;
+            }
+        }
+
+        /** The scheme's velocity and acceleration at the end of the step
+         * for the end displacement @p u. */
+        void
+        kinematics(const Vector<double> &u,
+                   Vector<double>       &v,
+                   Vector<double>       &a) const
+        {
+          const auto &p = integrator.parameters;
+          v.reinit(u.size());
+          a.reinit(u.size());
+          if (p.scheme == Scheme::newmark)
+            {
+              // a = (u - u_n - dt v_n) / (beta dt^2) - (1/(2 beta) - 1) a_n
+              a = u;
+              a -= s.u;
+              a.add(-dt, s.v);
+              a *= 1. / (p.beta * dt * dt);
+              a.add(-(0.5 / p.beta - 1.), s.a);
+              // v = v_n + dt ((1 - gamma) a_n + gamma a)
+              v = s.v;
+              v.add(dt * (1. - p.gamma), s.a, dt * p.gamma, a);
+            }
+          else
+            {
+              // v = (u - u_n) / dt, a = (v - v_n) / dt
+              v = u;
+              v -= s.u;
+              v /= dt;
+              a = v;
+              a -= s.v;
+              a /= dt;
+            }
+        }
+
+        types::global_dof_index
+        n_dofs() const override
+        {
+          return problem.n_dofs();
+        }
+        const SparsityPattern &
+        sparsity_pattern() const override
+        {
+          return problem.sparsity_pattern();
+        }
+        bool
+        update_sparsity_pattern(const Vector<double> &u) override
+        {
+          return problem.update_sparsity_pattern(u);
+        }
+        bool
+        assemble(const Vector<double> &u,
+                 const double          load_factor,
+                 Vector<double>       &R,
+                 SparseMatrix<double> *K) override
+        {
+          if (!problem.assemble(u, load_factor, R, K))
+            return false;
+          Vector<double> v, a, tmp(u.size());
+          kinematics(u, v, a);
+          integrator.mass_vmult(tmp, a);
+          R += tmp;
+          const auto &p = integrator.parameters;
+          if (p.rayleigh_alpha != 0. || p.rayleigh_beta != 0.)
+            {
+              integrator.mass_vmult(tmp, v);
+              R.add(p.rayleigh_alpha, tmp);
+              if (p.rayleigh_beta != 0.)
+                {
+                  K0.vmult(tmp, v);
+                  R.add(p.rayleigh_beta, tmp);
+                }
+            }
+          if (K != nullptr)
+            {
+              const double m = c_M + c_C * p.rayleigh_alpha;
+              if (M != nullptr)
+                add_entries(*K, m, *M);
+              else
+                for (types::global_dof_index i = 0; i < u.size(); ++i)
+                  K->add(i, i, m * (*M_lumped)[i]);
+              add_entries(*K, c_C * p.rayleigh_beta, K0);
+            }
+          return true;
+        }
+        std::map<types::global_dof_index, double>
+        prescribed_values(const double load_factor) const override
+        {
+          return problem.prescribed_values(load_factor);
+        }
+        double
+        external_force_norm(const double load_factor) const override
+        {
+          return problem.external_force_norm(load_factor);
+        }
+        Vector<double>
+        quasi_viscosity_diagonal(const double eta) const override
+        {
+          return problem.quasi_viscosity_diagonal(eta);
+        }
+        std::vector<std::vector<bool>>
+        constant_modes() const override
+        {
+          return problem.constant_modes();
+        }
+
+      private:
+        const TimeIntegrator       &integrator;
+        Solvers::NonlinearProblem  &problem;
+        const SparseMatrix<double> *M;
+        const Vector<double>       *M_lumped;
+        const SparseMatrix<double> &K0;
+        const State                &s;
+        const double                dt;
+        double                      c_M = 0., c_C = 0.;
+      };
+    } // namespace
+
+
+    Scheme
+    scheme_from_string(const std::string &name)
+    {
+      if (name == "implicit Euler")
+        return Scheme::implicit_euler;
+      if (name == "Newmark")
+        return Scheme::newmark;
+      if (name == "central difference")
+        return Scheme::central_difference;
+      AssertThrow(false,
+                  ExcMessage(
+                    "unknown time integration scheme '" + name +
+                    "' (implicit Euler, Newmark, central difference)"));
+      return Scheme::newmark;
+    }
+
+
+    TimeIntegrator::TimeIntegrator(const Parameters           &parameters,
+                                   Solvers::NonlinearProblem  &problem,
+                                   const SparseMatrix<double> *mass_consistent,
+                                   const Vector<double>       *mass_lumped)
+      : parameters(parameters)
+      , problem(problem)
+      , M(mass_consistent)
+      , M_lumped(mass_lumped)
+    {
+      AssertThrow(M != nullptr || M_lumped != nullptr,
+                  ExcMessage("time integration needs a mass matrix"));
+      AssertThrow(parameters.scheme != Scheme::central_difference ||
+                    M_lumped != nullptr,
+                  ExcMessage("the central difference scheme needs the "
+                             "lumped mass"));
+      if (parameters.scheme == Scheme::central_difference)
+        M = nullptr; // explicit: the lumped mass only
+    }
+
+
+    void
+    TimeIntegrator::mass_vmult(Vector<double>       &Mx,
+                               const Vector<double> &x) const
+    {
+      if (M != nullptr)
+        M->vmult(Mx, x);
+      else
+        for (types::global_dof_index i = 0; i < x.size(); ++i)
+          Mx[i] = (*M_lumped)[i] * x[i];
+    }
+
+
+    void
+    TimeIntegrator::damping_vmult(Vector<double>       &Cx,
+                                  const Vector<double> &x) const
+    {
+      Cx.reinit(x.size());
+      if (parameters.rayleigh_alpha == 0. && parameters.rayleigh_beta == 0.)
+        return;
+      mass_vmult(Cx, x);
+      Cx *= parameters.rayleigh_alpha;
+      if (parameters.rayleigh_beta != 0.)
+        {
+          Vector<double> tmp(x.size());
+          K0.vmult(tmp, x);
+          Cx.add(parameters.rayleigh_beta, tmp);
+        }
+    }
+
+
+    double
+    TimeIntegrator::kinetic_energy(const State &s) const
+    {
+      Vector<double> Mv(s.v.size());
+      mass_vmult(Mv, s.v);
+      return 0.5 * (s.v * Mv);
+    }
+
+
+    void
+    TimeIntegrator::initialize(State &s)
+    {
+      const auto           n = problem.n_dofs();
+      Vector<double>       R(n);
+      SparseMatrix<double> K(problem.sparsity_pattern());
+      AssertThrow(problem.assemble(s.u, 1., R, &K),
+                  ExcMessage("time integration: an element is inverted in "
+                             "the initial state"));
+      if (parameters.rayleigh_beta != 0.)
+        {
+          damping_pattern.copy_from(problem.sparsity_pattern());
+          K0.reinit(damping_pattern);
+          K0.copy_from(K);
+        }
+      // M a_0 = -R(u_0) - C v_0 on the free DoFs; prescribed: a_0 = 0
+      Vector<double> rhs(n), Cv;
+      damping_vmult(Cv, s.v);
+      rhs = R;
+      rhs += Cv;
+      rhs *= -1.;
+      s.a.reinit(n);
+      const auto prescribed = problem.prescribed_values(1.);
+      if (M != nullptr)
+        {
+          SparseMatrix<double> A(problem.sparsity_pattern());
+          add_entries(A, 1., *M);
+          std::map<types::global_dof_index, double> zero;
+          for (const auto &t : prescribed)
+            zero[t.first] = 0.;
+          MatrixTools::apply_boundary_values(zero, A, s.a, rhs, true);
+          Solvers::LinearSolver::Parameters direct;
+          Solvers::LinearSolver(direct).solve(A, s.a, rhs);
+        }
+      else
+        for (types::global_dof_index i = 0; i < n; ++i)
+          if ((*M_lumped)[i] > 0. && prescribed.count(i) == 0)
+            s.a[i] = rhs[i] / (*M_lumped)[i];
+      reference_energy = kinetic_energy(s) + 0.5 * std::abs(s.u * R) +
+                         std::numeric_limits<double>::min();
+    }
+
+
+    double
+    TimeIntegrator::implicit_step(State &s, const double dt)
+    {
+      EffectiveProblem effective(*this, problem, M, M_lumped, K0, s, dt);
+      // predictor: constant acceleration
+      Vector<double> u = s.u;
+      u.add(dt, s.v, 0.5 * dt * dt, s.a);
+      for (const auto &t : problem.prescribed_values(1.))
+        u[t.first] = t.second;
+      Solvers::IncrementalNewtonSolver newton(parameters.newton);
+      Solvers::SolveStatistics         statistics;
+      const std::string                failure =
+        newton.newton(effective, u, 1., 0, statistics);
+      last_iterations = statistics.newton_iterations;
+      if (!failure.empty())
+        {
+          std::ostringstream msg;
+          msg << "at t = " << s.t << " with step " << dt << ": " << failure;
+          throw std::runtime_error(msg.str());
+        }
+      Vector<double> v, a;
+      effective.kinematics(u, v, a);
+      s.u.swap(u);
+      s.v.swap(v);
+      s.a.swap(a);
+      s.t += dt;
+      return dt;
+    }
+
+
+    void
+    TimeIntegrator::explicit_step(State &s, const double dt)
+    {
+      const auto n = s.u.size();
+      // v_{n+1/2} = v_n + dt/2 a_n, u_{n+1} = u_n + dt v_{n+1/2}
+      Vector<double> v_half = s.v;
+      v_half.add(0.5 * dt, s.a);
+      s.u.add(dt, v_half);
+      const auto prescribed = problem.prescribed_values(1.);
+      for (const auto &t : prescribed)
+        s.u[t.first] = t.second;
+      Vector<double> R(n), Cv;
+      const bool     valid = problem.assemble(s.u, 1., R, nullptr);
+      damping_vmult(Cv, v_half);
+      s.a = 0.;
+      for (types::global_dof_index i = 0; i < n; ++i)
+        if ((*M_lumped)[i] > 0. && prescribed.count(i) == 0)
+          s.a[i] = -(R[i] + Cv[i]) / (*M_lumped)[i];
+      s.v = v_half;
+      s.v.add(0.5 * dt, s.a);
+      s.t += dt;
+      const double kinetic = kinetic_energy(s);
+      if (!valid || !std::isfinite(kinetic) ||
+          kinetic > parameters.blow_up_factor * reference_energy)
+        {
+          std::ostringstream msg;
+          msg << "the explicit central difference scheme is unstable at t = "
+              << s.t << " with step " << dt
+              << (valid ? " (the kinetic energy grew by more than a factor " :
+                          " (an element inverted; the kinetic energy is ")
+              << (valid ? parameters.blow_up_factor : kinetic)
+              << "): choose a step below the stable estimate";
+          throw std::runtime_error(msg.str());
+        }
+    }
+
+
+    double
+    TimeIntegrator::step(State &s, const double dt, double &next_dt)
+    {
+      if (parameters.scheme == Scheme::central_difference)
+        {
+          explicit_step(s, dt);
+          next_dt = dt;
+          return dt;
+        }
+      double      h = dt;
+      std::string reason;
+      while (h >= parameters.minimum_step)
+        {
+          State trial = s;
+          try
+            {
+              implicit_step(trial, h);
+            }
+          catch (const std::runtime_error &e)
+            {
+              reason = e.what();
+              h *= 0.5; // cut back and retry from s
+              continue;
+            }
+          s = std::move(trial);
+          next_dt =
+            last_iterations <= parameters.easy_iterations ?
+              std::min(parameters.maximum_step, h * parameters.growth_factor) :
+              h;
+          return h;
+        }
+      AssertThrow(false,
+                  ExcMessage("time integration failed: the step fell below "
+                             "the minimum " +
+                             std::to_string(parameters.minimum_step) +
+                             "; last failure " + reason));
+      return 0.;
+    }
+  } // namespace Dynamics
+} // namespace TissueContact

@@ -1,0 +1,236 @@
+// A single-mode oscillator built from the FE model (the textbook's
+// time-step study): a clamped linear elastic bar [0,1] x [0,0.2]^2 (P1,
+// density 1, mu = lambda = 1) released from rest in its lowest mode phi
+// (inverse iteration on K phi = omega^2 M phi), small amplitude.
+//  - Newmark (average acceleration) over dt = T/10, T/20, T/40: the period
+//    measured from the modal coordinate's zero crossings against
+//    T = 2 pi / omega (period elongation ~ (omega dt)^2 / 12: second order)
+//    and the energy after 5 periods (conserved);
+//  - implicit Euler at the same steps: the energy dissipated;
+//  - central difference (lumped mass) at dt = f * 2 / omega_max (omega_max
+//    by power iteration on M_L^-1 K) for f = 0.5, 0.9, 1.1, 1.5: stable
+//    below the estimate, blow-up detected and reported above it.
+
+#include "../tests.h"
+
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/numerics/matrix_tools.h>
+#include <sstream>
+#include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/dynamics/mass_matrix.h>
+#include <tissue_contact/dynamics/time_integrator.h>
+#include <tissue_contact/simulation/static_simulation.h>
+
+using namespace dealii;
+using namespace TissueContact;
+using namespace TissueContactTests;
+
+namespace
+{
+  const char *scene = R"(
+subsection Mesh
+  set Source           = box
+  set Box lower corner = 0, 0, 0
+  set Box upper corner = 1, 0.2, 0.2
+  set Box subdivisions = 10, 2, 2
+end
+subsection Bodies
+  subsection Body 0
+    set Model   = linear
+    set Mu      = 1
+    set Lambda  = 1
+    set Density = 1
+  end
+end
+subsection Boundary conditions
+  set Number of Dirichlet conditions = 1
+  subsection Dirichlet 0
+    set Boundary id = 0
+  end
+end
+subsection Output
+  set Write VTU    = false
+  set Print timing = false
+  set Directory    = .
+end
+)";
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+  std::ostringstream log;
+  StaticSimulation   sim(Scene::SceneParameters::from_string(scene), log);
+  const auto        &disc   = sim.discretization();
+  const auto         n      = disc.n_dofs();
+  const auto         bodies = sim.get_scene().body_data();
+
+  SparseMatrix<double> M(disc.sparsity_pattern);
+  Dynamics::assemble_consistent_mass(disc, bodies, M);
+  const Vector<double> M_lumped = Dynamics::lumped_mass(disc, bodies);
+
+  // K with the clamped DoFs eliminated (identity rows and columns)
+  SparseMatrix<double> K(sim.sparsity_pattern());
+  Vector<double>       zero_u(n), R(n);
+  sim.assemble(zero_u, 1., R, &K);
+  std::map<types::global_dof_index, double> clamped;
+  for (const auto &t : sim.prescribed_values(1.))
+    clamped[t.first] = 0.;
+  SparseMatrix<double> K_free(sim.sparsity_pattern());
+  K_free.copy_from(K);
+  {
+    Vector<double> x(n), b(n);
+    MatrixTools::apply_boundary_values(clamped, K_free, x, b, true);
+  }
+  const auto zero_clamped = [&](Vector<double> &x) {
+    for (const auto &t : clamped)
+      x[t.first] = 0.;
+  };
+
+  // lowest mode by inverse iteration
+  SparseDirectUMFPACK K_inverse;
+  K_inverse.initialize(K_free);
+  Vector<double> phi(n), tmp(n);
+  phi = 1.;
+  zero_clamped(phi);
+  for (unsigned int it = 0; it < 60; ++it)
+    {
+      M.vmult(tmp, phi);
+      zero_clamped(tmp);
+      K_inverse.vmult(phi, tmp);
+      phi /= phi.linfty_norm();
+    }
+  M.vmult(tmp, phi);
+  const double phi_M_phi = phi * tmp;
+  K.vmult(tmp, phi);
+  const double omega = std::sqrt((phi * tmp) / phi_M_phi);
+  const double T     = 2. * numbers::PI / omega;
+  deallog << "lowest mode: omega " << std::setprecision(5) << omega
+          << ", period T " << T << std::setprecision(6) << std::endl;
+
+  // largest frequency of the lumped system by power iteration
+  Vector<double> w(n);
+  for (types::global_dof_index i = 0; i < n; ++i)
+    w[i] = std::sin(1. + i);
+  zero_clamped(w);
+  double omega_max = 0.;
+  for (unsigned int it = 0; it < 400; ++it)
+    {
+      K_free.vmult(tmp, w);
+      zero_clamped(tmp);
+      for (types::global_dof_index i = 0; i < n; ++i)
+        tmp[i] /= M_lumped[i];
+      omega_max = std::sqrt(tmp.l2_norm() / w.l2_norm());
+      w         = tmp;
+      w /= w.l2_norm();
+    }
+  const double dt_stable = 2. / omega_max;
+
+  const auto modal = [&](const Vector<double> &u) {
+    Vector<double> Mu(n);
+    M.vmult(Mu, u);
+    return (phi * Mu) / phi_M_phi;
+  };
+  const double amplitude = 1e-3;
+
+  const auto run = [&](const Dynamics::Scheme scheme,
+                       const double           dt,
+                       const double           duration,
+                       double                &period,
+                       double                &energy_ratio,
+                       std::string           &failure) {
+    Dynamics::TimeIntegrator::Parameters p;
+    p.scheme = scheme;
+    Dynamics::TimeIntegrator integrator(
+      p,
+      sim,
+      scheme == Dynamics::Scheme::central_difference ? nullptr : &M,
+      &M_lumped);
+    Dynamics::State s;
+    s.u = phi;
+    s.u *= amplitude;
+    s.v.reinit(n);
+    integrator.initialize(s);
+    const auto energy = [&](const Dynamics::State &st) {
+      return integrator.kinetic_energy(st) + sim.energy(st.u, 1.);
+    };
+    const double        E0 = energy(s);
+    std::vector<double> crossings;
+    double              q_previous = modal(s.u), next = dt;
+    failure.clear();
+    try
+      {
+        while (s.t < duration - 1e-12 * dt)
+          {
+            const double t_previous = s.t;
+            integrator.step(s, dt, next);
+            const double q = modal(s.u);
+            if (q_previous < 0. && q >= 0.)
+              crossings.push_back(t_previous + (s.t - t_previous) * q_previous /
+                                                 (q_previous - q));
+            q_previous = q;
+          }
+      }
+    catch (const std::exception &e)
+      {
+        failure = TissueContact::error_message(e);
+      }
+    period       = crossings.size() >= 2 ?
+                     (crossings.back() - crossings.front()) / (crossings.size() - 1) :
+                     0.;
+    energy_ratio = energy(s) / E0;
+  };
+
+  deallog << "Newmark (average acceleration) and implicit Euler, 5 periods:"
+          << std::endl;
+  for (const unsigned int steps : {10u, 20u, 40u})
+    {
+      const double dt = T / steps;
+      double       period_n, ratio_n, period_e, ratio_e;
+      std::string  failure;
+      run(Dynamics::Scheme::newmark, dt, 5. * T, period_n, ratio_n, failure);
+      run(Dynamics::Scheme::implicit_euler,
+          dt,
+          5. * T,
+          period_e,
+          ratio_e,
+          failure);
+      const double elongation = std::pow(omega * dt, 2) / 12.;
+      deallog << "  dt = T/" << steps
+              << ": Newmark period / T - 1 = " << std::setprecision(3)
+              << period_n / T - 1.
+              << " (theory (omega dt)^2/12 = " << elongation
+              << "), energy change " << error_bound(std::abs(ratio_n - 1.), -10)
+              << "; implicit Euler energy after 5 periods / initial " << ratio_e
+              << std::setprecision(6) << std::endl;
+    }
+
+  deallog << "central difference, lumped mass, 2 periods; stable estimate "
+             "2/omega_max = "
+          << std::setprecision(4) << dt_stable
+          << " (T / dt_stable = " << std::setprecision(4) << T / dt_stable
+          << ")" << std::setprecision(6) << std::endl;
+  for (const double f : {0.5, 0.9, 1.1, 1.5})
+    {
+      double      period, ratio;
+      std::string failure;
+      run(Dynamics::Scheme::central_difference,
+          f * dt_stable,
+          2. * T,
+          period,
+          ratio,
+          failure);
+      deallog << "  dt = " << std::setprecision(2) << f << std::setprecision(6)
+              << " * estimate: ";
+      if (failure.empty())
+        deallog << "stable, period / T - 1 = " << std::setprecision(2)
+                << period / T - 1. << ", energy / initial "
+                << std::setprecision(3) << ratio << std::setprecision(6)
+                << std::endl;
+      else
+        deallog << "unstable, detected: "
+                << failure.substr(0, failure.find(" at t =")) << std::endl;
+    }
+}
