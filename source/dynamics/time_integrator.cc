@@ -310,7 +310,7 @@ namespace TissueContact
       Solvers::IncrementalNewtonSolver newton(parameters.newton);
       Solvers::SolveStatistics         statistics;
       const std::string                failure =
-        newton.newton(effective, u, 1., 0, statistics);
+        newton.solve_at(effective, u, 1., 0, statistics);
       last_iterations = statistics.newton_iterations;
       if (!failure.empty())
         {

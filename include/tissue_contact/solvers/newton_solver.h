@@ -4,6 +4,7 @@
 #include <deal.II/base/timer.h>
 #include <functional>
 #include <string>
+#include <tissue_contact/solvers/kinsol_solver.h>
 #include <tissue_contact/solvers/linear_solver.h>
 #include <tissue_contact/solvers/nonlinear_problem.h>
 
@@ -63,14 +64,17 @@ namespace TissueContact
         unsigned int easy_iterations     = 5;
         bool         two_point_predictor = true;
 
-        unsigned int max_iterations      = 25;
-        double       residual_tolerance  = 1e-8;
-        double       absolute_tolerance  = 1e-12;
-        unsigned int max_halvings        = 20;
-        bool         energy_line_search  = false;
-        bool         quasi_viscosity     = false;
-        double       viscosity_factor    = 0.1;
-        double       viscosity_time_step = 1.;
+        unsigned int max_iterations     = 25;
+        double       residual_tolerance = 1e-8;
+        double       absolute_tolerance = 1e-12;
+        unsigned int max_halvings       = 20;
+        bool         energy_line_search = false;
+        /** "Newton" (the project's loop) or "KINSOL" per increment. */
+        bool                     use_kinsol = false;
+        KinsolSolver::Parameters kinsol;
+        bool                     quasi_viscosity     = false;
+        double                   viscosity_factor    = 0.1;
+        double                   viscosity_time_step = 1.;
 
         LinearSolver::Parameters linear_solver;
 
@@ -116,6 +120,19 @@ namespace TissueContact
              const unsigned int increment,
              SolveStatistics   &statistics,
              TimerOutput       *timer = nullptr);
+
+      /**
+       * One nonlinear solve at @p load_factor by the configured solver:
+       * newton(), or KINSOL (then on_iteration is not called). Returns an
+       * empty string on success, else why it failed.
+       */
+      std::string
+      solve_at(NonlinearProblem  &problem,
+               Vector<double>    &u,
+               const double       load_factor,
+               const unsigned int increment,
+               SolveStatistics   &statistics,
+               TimerOutput       *timer = nullptr);
 
       const Parameters parameters;
 

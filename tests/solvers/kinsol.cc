@@ -1,0 +1,146 @@
+// KINSOL (SUNDIALS, through deal.II) as the nonlinear solver of every load
+// increment, against the project's Newton loop, on a hyperelastic scene (a
+// Mooney-Rivlin block bent by a traction) and on a contact scene (the two
+// stacked blocks of tests/contact/stacked_blocks.msh): the same
+// equilibrium (relative difference printed) and the iteration counts.
+
+#include "../tests.h"
+
+#include <sstream>
+#include <tissue_contact/simulation/static_simulation.h>
+
+using namespace dealii;
+using namespace TissueContact;
+using namespace TissueContactTests;
+
+namespace
+{
+  const std::string output = R"(
+subsection Output
+  set Write VTU    = false
+  set Print timing = false
+  set Directory    = .
+end
+)";
+
+  const std::string hyperelastic = R"(
+subsection Mesh
+  set Box upper corner = 1, 0.2, 0.2
+  set Box subdivisions = 6, 2, 2
+end
+subsection Bodies
+  subsection Body 0
+    set Model = Mooney-Rivlin
+    set C1    = 1
+    set C2    = 0.5
+    set a     = 2
+  end
+end
+subsection Boundary conditions
+  set Number of tractions = 1
+  subsection Dirichlet 0
+    set Boundary id = 0
+  end
+  subsection Traction 0
+    set Boundary id = 1
+    set Traction    = 0, 0.3, 0.1
+  end
+end
+)";
+
+  std::string
+  contact()
+  {
+    return std::string(R"(
+subsection Mesh
+  set Source = file
+  set File   = )") +
+           SOURCE_DIR + R"(/../contact/stacked_blocks.msh
+end
+subsection Bodies
+  set Number of bodies = 2
+  subsection Body 0
+    set Material id = 1
+    set Mu          = 100
+    set Lambda      = 100
+  end
+  subsection Body 1
+    set Material id = 2
+    set Mu          = 100
+    set Lambda      = 100
+  end
+end
+subsection Boundary conditions
+  set Number of Dirichlet conditions = 2
+  set Number of tractions = 1
+  subsection Dirichlet 0
+    set Boundary id = 1
+  end
+  subsection Dirichlet 1
+    set Boundary id = 2
+    set Components  = xy
+  end
+  subsection Traction 0
+    set Boundary id = 2
+    set Traction    = 0, 0, -10
+  end
+end
+subsection Contact
+  set Contact surfaces = 3, 4
+  set Number of pairs  = 2
+  subsection Pair 0
+    set Surface body   = 2
+    set Volume body    = 1
+    set Penalty factor = 1e3
+  end
+  subsection Pair 1
+    set Surface body   = 1
+    set Volume body    = 2
+    set Penalty factor = 1e3
+  end
+end
+)";
+  }
+
+  void
+  compare(const std::string &name, const std::string &scene)
+  {
+    // Newton with the residual line search, Newton with the energy line
+    // search, KINSOL (its own line search on |F|^2)
+    const char    *settings[3] = {"  set Nonlinear solver = Newton\n",
+                                  "  set Nonlinear solver = Newton\n"
+                                     "  set Line search = energy\n",
+                                  "  set Nonlinear solver = KINSOL\n"};
+    Vector<double> u[3];
+    unsigned int   iterations[3];
+    for (const unsigned int s : {0u, 1u, 2u})
+      {
+        std::ostringstream log;
+        StaticSimulation   sim(Scene::SceneParameters::from_string(
+                               scene + output + "subsection Newton\n" +
+                               settings[s] + "end\n"),
+                             log);
+        iterations[s] = sim.solve_quietly().newton_iterations;
+        u[s]          = sim.solution();
+      }
+    Vector<double> d(u[2]), e(u[1]);
+    d -= u[0];
+    e -= u[0];
+    deallog << name << ": |u_KINSOL - u_Newton| / |u_Newton| "
+            << error_bound(d.l2_norm() / u[0].l2_norm(), -8)
+            << " (energy line search: "
+            << error_bound(e.l2_norm() / u[0].l2_norm(), -8)
+            << "); iterations: Newton " << iterations[0]
+            << " (residual line search), " << iterations[1]
+            << " (energy line search), KINSOL " << iterations[2] << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+  compare("Mooney-Rivlin block, traction", hyperelastic);
+  compare("stacked blocks, contact", contact());
+}
