@@ -8,6 +8,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <iostream>
 #include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/simulation/dynamic_simulation.h>
 #include <tissue_contact/simulation/static_simulation.h>
 
 namespace
@@ -102,8 +103,10 @@ main(int argc, char **argv)
       if (arg.empty())
         std::cout << "No parameter file given: running the built-in default "
                      "scene (tissue-contact --help)\n";
-      StaticSimulation simulation(parameters, std::cout);
-      simulation.run();
+      if (parameters.time_integration.dynamic)
+        DynamicSimulation(parameters, std::cout).run();
+      else
+        StaticSimulation(parameters, std::cout).run();
     }
   catch (const std::exception &e)
     {

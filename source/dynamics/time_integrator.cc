@@ -216,6 +216,15 @@ namespace TissueContact
     }
 
 
+    double
+    TimeIntegrator::load_factor(const double t) const
+    {
+      return parameters.ramp_time > 0. ?
+               std::min(1., t / parameters.ramp_time) :
+               1.;
+    }
+
+
     void
     TimeIntegrator::mass_vmult(Vector<double>       &Mx,
                                const Vector<double> &x) const
@@ -261,7 +270,7 @@ namespace TissueContact
       const auto           n = problem.n_dofs();
       Vector<double>       R(n);
       SparseMatrix<double> K(problem.sparsity_pattern());
-      AssertThrow(problem.assemble(s.u, 1., R, &K),
+      AssertThrow(problem.assemble(s.u, load_factor(s.t), R, &K),
                   ExcMessage("time integration: an element is inverted in "
                              "the initial state"));
       if (parameters.rayleigh_beta != 0.)
@@ -277,7 +286,7 @@ namespace TissueContact
       rhs += Cv;
       rhs *= -1.;
       s.a.reinit(n);
-      const auto prescribed = problem.prescribed_values(1.);
+      const auto prescribed = problem.prescribed_values(load_factor(s.t));
       if (M != nullptr)
         {
           SparseMatrix<double> A(problem.sparsity_pattern());
@@ -305,12 +314,13 @@ namespace TissueContact
       // predictor: constant acceleration
       Vector<double> u = s.u;
       u.add(dt, s.v, 0.5 * dt * dt, s.a);
-      for (const auto &t : problem.prescribed_values(1.))
+      const double lambda = load_factor(s.t + dt);
+      for (const auto &t : problem.prescribed_values(lambda))
         u[t.first] = t.second;
       Solvers::IncrementalNewtonSolver newton(parameters.newton);
       Solvers::SolveStatistics         statistics;
       const std::string                failure =
-        newton.solve_at(effective, u, 1., 0, statistics);
+        newton.solve_at(effective, u, lambda, 0, statistics);
       last_iterations = statistics.newton_iterations;
       if (!failure.empty())
         {
@@ -336,11 +346,12 @@ namespace TissueContact
       Vector<double> v_half = s.v;
       v_half.add(0.5 * dt, s.a);
       s.u.add(dt, v_half);
-      const auto prescribed = problem.prescribed_values(1.);
+      const double lambda     = load_factor(s.t + dt);
+      const auto   prescribed = problem.prescribed_values(lambda);
       for (const auto &t : prescribed)
         s.u[t.first] = t.second;
       Vector<double> R(n), Cv;
-      const bool     valid = problem.assemble(s.u, 1., R, nullptr);
+      const bool     valid = problem.assemble(s.u, lambda, R, nullptr);
       damping_vmult(Cv, v_half);
       s.a = 0.;
       for (types::global_dof_index i = 0; i < n; ++i)

@@ -438,6 +438,91 @@ namespace TissueContact
 
 
     void
+    TimeIntegrationParameters::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time integration");
+      prm.declare_entry("Analysis",
+                        "static",
+                        Patterns::Selection("static|dynamic"),
+                        "static: incremental loading to equilibrium (no "
+                        "mass); dynamic: integrate the equations of motion "
+                        "in time (doc/theory/06-dynamics.md).");
+      prm.declare_entry("Scheme",
+                        "Newmark",
+                        Patterns::Selection(
+                          "Newmark|implicit Euler|central difference"),
+                        "Newmark (beta, gamma below; average acceleration by "
+                        "default: no numerical damping), implicit Euler "
+                        "(dissipative), central difference (explicit, lumped "
+                        "mass, stable below 2/omega_max).");
+      prm.declare_entry("Time step", "0.01", Patterns::Double(0.), "");
+      prm.declare_entry("End time", "1", Patterns::Double(0.), "");
+      prm.declare_entry("Minimum time step",
+                        "1e-8",
+                        Patterns::Double(0.),
+                        "An implicit step whose Newton solve fails is halved "
+                        "and retried; below this size the run stops.");
+      prm.declare_entry("Growth factor",
+                        "1",
+                        Patterns::Double(1.),
+                        "After a step with at most 3 Newton iterations the "
+                        "next may grow by this factor (up to Time step).");
+      prm.declare_entry("Newmark beta", "0.25", Patterns::Double(0., 0.5), "");
+      prm.declare_entry("Newmark gamma", "0.5", Patterns::Double(0., 1.), "");
+      prm.declare_entry("Rayleigh alpha",
+                        "0",
+                        Patterns::Double(0.),
+                        "Damping C = alpha M + beta K_0 (K_0: the tangent at "
+                        "the start).");
+      prm.declare_entry("Rayleigh beta", "0", Patterns::Double(0.), "");
+      prm.declare_entry("Mass",
+                        "consistent",
+                        Patterns::Selection("consistent|lumped"),
+                        "The implicit schemes may use either; central "
+                        "difference always uses the lumped (HRZ) mass.");
+      prm.declare_entry("Ramp time",
+                        "0",
+                        Patterns::Double(0.),
+                        "Loads and prescribed motions grow linearly from "
+                        "zero over this time (0: applied at t = 0).");
+      prm.declare_entry("Output interval",
+                        "0",
+                        Patterns::Double(0.),
+                        "Time between VTU outputs (0: every step).");
+      prm.leave_subsection();
+    }
+
+
+    void
+    TimeIntegrationParameters::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time integration");
+      dynamic                 = prm.get("Analysis") == "dynamic";
+      integrator.scheme       = Dynamics::scheme_from_string(prm.get("Scheme"));
+      time_step               = prm.get_double("Time step");
+      end_time                = prm.get_double("End time");
+      integrator.minimum_step = prm.get_double("Minimum time step");
+      integrator.growth_factor  = prm.get_double("Growth factor");
+      integrator.maximum_step   = time_step;
+      integrator.beta           = prm.get_double("Newmark beta");
+      integrator.gamma          = prm.get_double("Newmark gamma");
+      integrator.rayleigh_alpha = prm.get_double("Rayleigh alpha");
+      integrator.rayleigh_beta  = prm.get_double("Rayleigh beta");
+      integrator.ramp_time      = prm.get_double("Ramp time");
+      lumped_mass               = prm.get("Mass") == "lumped";
+      output_interval           = prm.get_double("Output interval");
+      prm.leave_subsection();
+      AssertThrow(!dynamic || (time_step > 0. && end_time > 0.),
+                  ExcMessage("Time integration: a dynamic analysis needs "
+                             "Time step > 0 and End time > 0"));
+      AssertThrow(integrator.scheme != Dynamics::Scheme::newmark ||
+                    integrator.beta > 0.,
+                  ExcMessage("Time integration: Newmark beta must be > 0 "
+                             "for the implicit Newmark scheme"));
+    }
+
+
+    void
     OutputParameters::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Output");
@@ -550,6 +635,7 @@ namespace TissueContact
       prm.leave_subsection();
 
       Solvers::IncrementalNewtonSolver::Parameters::declare(prm);
+      TimeIntegrationParameters::declare(prm);
       OutputParameters::declare(prm);
     }
 
@@ -615,6 +701,8 @@ namespace TissueContact
                              "can touch"));
 
       solver.parse(prm);
+      time_integration.parse(prm);
+      time_integration.integrator.newton = solver;
       output.parse(prm, dir);
     }
 

@@ -48,6 +48,9 @@ namespace TissueContact
         double beta           = 0.25; ///< Newmark beta
         double gamma          = 0.5;  ///< Newmark gamma
         double rayleigh_alpha = 0., rayleigh_beta = 0.;
+        /** Loads and prescribed motions grow linearly from 0 to their full
+         * value over this time (0: applied at once). */
+        double ramp_time = 0.;
         /** Growth factor of the step after a step that took at most
          * easy_iterations Newton iterations; the step is halved after a
          * failed one, down to minimum_step. */
@@ -91,6 +94,10 @@ namespace TissueContact
        * there is). */
       void
       mass_vmult(Vector<double> &Mx, const Vector<double> &x) const;
+
+      /** The load factor at time @p t (Parameters::ramp_time). */
+      double
+      load_factor(const double t) const;
 
       /** Newton iterations of the last implicit step. */
       unsigned int last_iterations = 0;

@@ -4,6 +4,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <string>
+#include <tissue_contact/dynamics/time_integrator.h>
 #include <tissue_contact/scene/prescribed_motion.h>
 #include <tissue_contact/solvers/newton_solver.h>
 #include <vector>
@@ -120,6 +121,23 @@ namespace TissueContact
       std::vector<ObstacleParameters>    obstacles;
     };
 
+    /** prm subsection "Time integration": static (default) or dynamic
+     * analysis, and the time integrator's settings. */
+    struct TimeIntegrationParameters
+    {
+      bool                                 dynamic = false;
+      Dynamics::TimeIntegrator::Parameters integrator;
+      double                               time_step       = 0.01;
+      double                               end_time        = 1.;
+      double                               output_interval = 0.;
+      bool                                 lumped_mass     = false;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
     /** prm subsection "Output". */
     struct OutputParameters
     {
@@ -150,6 +168,7 @@ namespace TissueContact
       Tensor<1, 3>                                 gravity;
       ContactParameters                            contact;
       Solvers::IncrementalNewtonSolver::Parameters solver;
+      TimeIntegrationParameters                    time_integration;
       OutputParameters                             output;
 
       /** Declare everything, with the given numbers of subsections. */

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <ostream>
+#include <tissue_contact/dynamics/time_integrator.h>
+#include <tissue_contact/simulation/static_simulation.h>
+
+namespace TissueContact
+{
+  /**
+   * The dynamic analysis the program runs when the prm says
+   * "Time integration/Analysis = dynamic": the scene's static problem
+   * (elasticity, loads, contact, prescribed motions) with the mass of its
+   * bodies, integrated in time by Dynamics::TimeIntegrator
+   * (doc/theory/06-dynamics.md). Writes a VTU per output interval, the PVD
+   * series (time = simulated time) and a CSV line per step.
+   */
+  class DynamicSimulation
+  {
+  public:
+    DynamicSimulation(const Scene::SceneParameters &parameters,
+                      std::ostream                 &out);
+
+    /** Integrate from rest at the reference configuration to the end
+     * time. Throws (one line) if a step fails below the minimum step or
+     * the explicit scheme blows up; the output written so far is kept. */
+    void
+    run();
+
+    const Dynamics::State &
+    state() const
+    {
+      return s;
+    }
+
+  private:
+    std::ostream        &out;
+    StaticSimulation     problem;
+    SparseMatrix<double> M;
+    Vector<double>       M_lumped;
+    Dynamics::State      s;
+  };
+} // namespace TissueContact

@@ -1,0 +1,122 @@
+#include <deal.II/base/timer.h>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/dynamics/mass_matrix.h>
+#include <tissue_contact/output/vtu_writer.h>
+#include <tissue_contact/simulation/dynamic_simulation.h>
+
+namespace TissueContact
+{
+  DynamicSimulation::DynamicSimulation(const Scene::SceneParameters &parameters,
+                                       std::ostream                 &out)
+    : out(out)
+    , problem(parameters, out)
+  {
+    const auto &disc   = problem.discretization();
+    const auto  bodies = problem.get_scene().body_data();
+    const auto &ti     = parameters.time_integration;
+    M_lumped           = Dynamics::lumped_mass(disc, bodies);
+    if (!ti.lumped_mass &&
+        ti.integrator.scheme != Dynamics::Scheme::central_difference)
+      {
+        M.reinit(disc.sparsity_pattern);
+        Dynamics::assemble_consistent_mass(disc, bodies, M);
+      }
+  }
+
+
+  void
+  DynamicSimulation::run()
+  {
+    const auto &p    = problem.get_scene().parameters;
+    const auto &ti   = p.time_integration;
+    const auto &disc = problem.discretization();
+    Timer       timer;
+
+    static const char *names[] = {"implicit Euler",
+                                  "Newmark",
+                                  "central difference"};
+    out << "TissueContact dynamic analysis\n"
+        << "  mesh: " << problem.get_scene().triangulation.n_active_cells()
+        << " tetrahedra; P" << p.degree << " elements, " << disc.n_dofs()
+        << " unknowns\n"
+        << "  scheme: " << names[int(ti.integrator.scheme)] << ", time step "
+        << ti.time_step << ", end time " << ti.end_time << ", "
+        << (M.empty() ? "lumped" : "consistent") << " mass "
+        << M_lumped.mean_value() * M_lumped.size() / 3. << "\n";
+
+    Dynamics::TimeIntegrator integrator(ti.integrator,
+                                        problem,
+                                        M.empty() ? nullptr : &M,
+                                        &M_lumped);
+    s.u.reinit(disc.n_dofs());
+    s.v.reinit(disc.n_dofs());
+    s.t = 0.;
+    integrator.initialize(s);
+
+    std::filesystem::create_directories(p.output.directory);
+    const std::string csv_name =
+      p.output.directory + "/" + p.output.base_name + "-time.csv";
+    std::ofstream csv(csv_name);
+    csv << "step,time,time_step,newton_iterations,kinetic_energy,energy\n";
+    Output::VtuSeriesWriter vtu(p.output.directory, p.output.base_name);
+    const auto              depth =
+      problem.contact_assembler() != nullptr && !p.contact.pairs.empty() ?
+                     &problem.contact_assembler()->vertex_depth() :
+                     nullptr;
+    if (p.output.write_vtu)
+      vtu.write(disc, problem.elastic_assembler(), s.u, s.t, depth);
+
+    out << "  step     time         dt           Newton  kinetic energy\n";
+    unsigned int step = 0, cutbacks = 0, iterations = 0;
+    double       dt = ti.time_step, next_output = ti.output_interval;
+    try
+      {
+        while (s.t < ti.end_time * (1. - 1e-12))
+          {
+            const double request = std::min(dt, ti.end_time - s.t);
+            double       next    = request;
+            const double taken   = integrator.step(s, request, next);
+            cutbacks += (taken < request);
+            iterations += integrator.last_iterations;
+            dt = std::max(next, taken);
+            ++step;
+            const double kinetic = integrator.kinetic_energy(s);
+            const double energy =
+              kinetic + problem.energy(s.u, integrator.load_factor(s.t));
+            csv << step << ',' << s.t << ',' << taken << ','
+                << integrator.last_iterations << ',' << kinetic << ',' << energy
+                << '\n';
+            out << std::setw(6) << step << std::scientific
+                << std::setprecision(4) << std::setw(13) << s.t << std::setw(13)
+                << taken << std::setw(6) << integrator.last_iterations << "  "
+                << kinetic << std::defaultfloat << std::setprecision(6) << "\n";
+            if (p.output.write_vtu && (s.t >= next_output * (1. - 1e-12) ||
+                                       s.t >= ti.end_time * (1. - 1e-12)))
+              {
+                vtu.write(disc, problem.elastic_assembler(), s.u, s.t, depth);
+                next_output = s.t + ti.output_interval;
+              }
+          }
+      }
+    catch (const std::exception &e)
+      {
+        const std::string kept =
+          p.output.write_vtu ? "; the steps up to t = " + std::to_string(s.t) +
+                                 " are kept in " + vtu.pvd_file() :
+                               "";
+        AssertThrow(false, ExcMessage(error_message(e) + kept));
+      }
+    out << "Reached t = " << s.t << " in " << step << " steps (" << cutbacks
+        << " cut back), " << iterations << " Newton iterations"
+        << (p.output.print_timing ?
+              ", " + std::to_string(timer.wall_time()) + " s wall time" :
+              std::string())
+        << "\n"
+        << "  time history: " << csv_name << "\n";
+    if (p.output.write_vtu)
+      out << "  results: " << vtu.pvd_file() << " (open in ParaView)\n";
+  }
+} // namespace TissueContact
