@@ -12,6 +12,7 @@
 //  - the state at t = 3: at rest, the contact force equal to the weight.
 
 #include "../tests.h"
+#include "scenes.h"
 
 #include <sstream>
 #include <tissue_contact/dynamics/mass_matrix.h>
@@ -22,46 +23,7 @@ using namespace dealii;
 using namespace TissueContact;
 using namespace TissueContactTests;
 
-namespace
-{
-  const char *scene = R"(
-subsection Mesh
-  set Source           = box
-  set Box lower corner = 0, 0, 0.1
-  set Box upper corner = 0.2, 0.2, 0.3
-  set Box subdivisions = 2, 2, 2
-end
-subsection Bodies
-  subsection Body 0
-    set Model   = neo-Hookean
-    set Mu      = 100
-    set Lambda  = 100
-    set Density = 1
-  end
-end
-subsection Boundary conditions
-  set Number of Dirichlet conditions = 0
-end
-subsection Loads
-  set Gravity = 0, 0, -10
-end
-subsection Contact
-  set Contact surfaces    = 4
-  set Number of obstacles = 1
-  subsection Obstacle 0
-    set Type           = plane
-    set Point          = 0, 0, 0
-    set Normal         = 0, 0, 1
-    set Penalty factor = 1e3
-  end
-end
-subsection Output
-  set Write VTU    = false
-  set Print timing = false
-  set Directory    = .
-end
-)";
-} // namespace
+
 
 int
 main(int argc, char **argv)
@@ -69,7 +31,9 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
   std::ostringstream   log;
-  StaticSimulation     sim(Scene::SceneParameters::from_string(scene), log);
+  StaticSimulation     sim(Scene::SceneParameters::from_string(
+                         DynamicsTestScenes::falling_block),
+                       log);
   const auto          &disc      = sim.discretization();
   const auto           n         = disc.n_dofs();
   const auto           component = disc.dof_components();

@@ -12,6 +12,7 @@
 //    below the estimate, blow-up detected and reported above it.
 
 #include "../tests.h"
+#include "scenes.h"
 
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/numerics/matrix_tools.h>
@@ -25,114 +26,23 @@ using namespace dealii;
 using namespace TissueContact;
 using namespace TissueContactTests;
 
-namespace
-{
-  const char *scene = R"(
-subsection Mesh
-  set Source           = box
-  set Box lower corner = 0, 0, 0
-  set Box upper corner = 1, 0.2, 0.2
-  set Box subdivisions = 10, 2, 2
-end
-subsection Bodies
-  subsection Body 0
-    set Model   = linear
-    set Mu      = 1
-    set Lambda  = 1
-    set Density = 1
-  end
-end
-subsection Boundary conditions
-  set Number of Dirichlet conditions = 1
-  subsection Dirichlet 0
-    set Boundary id = 0
-  end
-end
-subsection Output
-  set Write VTU    = false
-  set Print timing = false
-  set Directory    = .
-end
-)";
-} // namespace
-
 int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
-  std::ostringstream log;
-  StaticSimulation   sim(Scene::SceneParameters::from_string(scene), log);
-  const auto        &disc   = sim.discretization();
-  const auto         n      = disc.n_dofs();
-  const auto         bodies = sim.get_scene().body_data();
-
-  SparseMatrix<double> M(disc.sparsity_pattern);
-  Dynamics::assemble_consistent_mass(disc, bodies, M);
-  const Vector<double> M_lumped = Dynamics::lumped_mass(disc, bodies);
-
-  // K with the clamped DoFs eliminated (identity rows and columns)
-  SparseMatrix<double> K(sim.sparsity_pattern());
-  Vector<double>       zero_u(n), R(n);
-  sim.assemble(zero_u, 1., R, &K);
-  std::map<types::global_dof_index, double> clamped;
-  for (const auto &t : sim.prescribed_values(1.))
-    clamped[t.first] = 0.;
-  SparseMatrix<double> K_free(sim.sparsity_pattern());
-  K_free.copy_from(K);
-  {
-    Vector<double> x(n), b(n);
-    MatrixTools::apply_boundary_values(clamped, K_free, x, b, true);
-  }
-  const auto zero_clamped = [&](Vector<double> &x) {
-    for (const auto &t : clamped)
-      x[t.first] = 0.;
-  };
-
-  // lowest mode by inverse iteration
-  SparseDirectUMFPACK K_inverse;
-  K_inverse.initialize(K_free);
-  Vector<double> phi(n), tmp(n);
-  phi = 1.;
-  zero_clamped(phi);
-  for (unsigned int it = 0; it < 60; ++it)
-    {
-      M.vmult(tmp, phi);
-      zero_clamped(tmp);
-      K_inverse.vmult(phi, tmp);
-      phi /= phi.linfty_norm();
-    }
-  M.vmult(tmp, phi);
-  const double phi_M_phi = phi * tmp;
-  K.vmult(tmp, phi);
-  const double omega = std::sqrt((phi * tmp) / phi_M_phi);
-  const double T     = 2. * numbers::PI / omega;
+  DynamicsTestScenes::BarOscillator bar;
+  auto                             &sim       = bar.sim;
+  const auto                        n         = bar.n;
+  const auto                       &M         = bar.M;
+  const auto                       &M_lumped  = bar.M_lumped;
+  const auto                       &phi       = bar.phi;
+  const double                      omega     = bar.omega;
+  const double                      T         = bar.T;
+  const double                      dt_stable = 2. / bar.omega_max;
   deallog << "lowest mode: omega " << std::setprecision(5) << omega
           << ", period T " << T << std::setprecision(6) << std::endl;
-
-  // largest frequency of the lumped system by power iteration
-  Vector<double> w(n);
-  for (types::global_dof_index i = 0; i < n; ++i)
-    w[i] = std::sin(1. + i);
-  zero_clamped(w);
-  double omega_max = 0.;
-  for (unsigned int it = 0; it < 400; ++it)
-    {
-      K_free.vmult(tmp, w);
-      zero_clamped(tmp);
-      for (types::global_dof_index i = 0; i < n; ++i)
-        tmp[i] /= M_lumped[i];
-      omega_max = std::sqrt(tmp.l2_norm() / w.l2_norm());
-      w         = tmp;
-      w /= w.l2_norm();
-    }
-  const double dt_stable = 2. / omega_max;
-
-  const auto modal = [&](const Vector<double> &u) {
-    Vector<double> Mu(n);
-    M.vmult(Mu, u);
-    return (phi * Mu) / phi_M_phi;
-  };
+  const auto   modal = [&](const Vector<double> &u) { return bar.modal(u); };
   const double amplitude = 1e-3;
 
   const auto run = [&](const Dynamics::Scheme scheme,

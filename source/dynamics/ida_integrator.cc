@@ -1,0 +1,226 @@
+#include <deal.II/base/index_set.h>
+#include <deal.II/numerics/matrix_tools.h>
+#include <tissue_contact/dynamics/ida_integrator.h>
+
+namespace TissueContact
+{
+  namespace Dynamics
+  {
+    IdaIntegrator::IdaIntegrator(
+      const SUNDIALS::IDA<Vector<double>>::AdditionalData &data,
+      const TimeIntegrator::Parameters                    &parameters,
+      Solvers::NonlinearProblem                           &problem,
+      const SparseMatrix<double>                          &mass)
+      : data(data)
+      , parameters(parameters)
+      , problem(problem)
+      , M(mass)
+    {
+    }
+
+
+    unsigned int
+    IdaIntegrator::integrate(State                                    &s,
+                             const std::function<void(const State &)> &output)
+    {
+      const auto n = problem.n_dofs();
+      // the load factor and the prescribed values and velocities at t
+      const auto lambda = [&](const double t) {
+        return parameters.ramp_time > 0. ?
+                 std::min(1., t / parameters.ramp_time) :
+                 1.;
+      };
+      const auto prescribed_velocity = [&](const double t) {
+        std::map<types::global_dof_index, double> v;
+        const double                              h = 1e-7;
+        const auto                                minus =
+          problem.prescribed_values(lambda(std::max(0., t - h)));
+        const auto plus = problem.prescribed_values(lambda(t + h));
+        for (const auto &p : plus)
+          v[p.first] =
+            (p.second - minus.at(p.first)) / (t + h - std::max(0., t - h));
+        return v;
+      };
+
+      // Rayleigh damping C = alpha M + beta K_0
+      SparsityPattern      K0_pattern;
+      SparseMatrix<double> K0;
+      Vector<double>       R(n), tmp(n);
+      if (parameters.rayleigh_beta != 0.)
+        {
+          K0_pattern.copy_from(problem.sparsity_pattern());
+          K0.reinit(K0_pattern);
+          problem.assemble(s.u, lambda(s.t), R, &K0);
+        }
+      const auto damping_vmult = [&](Vector<double>       &Cx,
+                                     const Vector<double> &x) {
+        M.vmult(Cx, x);
+        Cx *= parameters.rayleigh_alpha;
+        if (parameters.rayleigh_beta != 0.)
+          {
+            Vector<double> t(x.size());
+            K0.vmult(t, x);
+            Cx.add(parameters.rayleigh_beta, t);
+          }
+      };
+
+      SUNDIALS::IDA<Vector<double>>             ida(data);
+      SparseMatrix<double>                      J;
+      SparseDirectUMFPACK                       J_inverse;
+      double                                    alpha_ida = 0.;
+      std::map<types::global_dof_index, double> fixed;
+      n_jacobian_setups = 0;
+
+      const auto split =
+        [n](const Vector<double> &y, Vector<double> &a, Vector<double> &b) {
+          a.reinit(n);
+          b.reinit(n);
+          for (types::global_dof_index i = 0; i < n; ++i)
+            {
+              a[i] = y[i];
+              b[i] = y[n + i];
+            }
+        };
+
+      ida.reinit_vector = [n](Vector<double> &v) { v.reinit(2 * n); };
+      ida.residual      = [&](const double          t,
+                         const Vector<double> &y,
+                         const Vector<double> &y_dot,
+                         Vector<double>       &F) {
+        Vector<double> u, v, u_dot, v_dot;
+        split(y, u, v);
+        split(y_dot, u_dot, v_dot);
+        problem.update_sparsity_pattern(u);
+        if (!problem.assemble(u, lambda(t), R, nullptr))
+          return 1; // an inverted element: IDA retries with a smaller step
+        Vector<double> Fv(n);
+        M.vmult(Fv, v_dot);
+        Fv += R;
+        damping_vmult(tmp, v);
+        Fv += tmp;
+        for (types::global_dof_index i = 0; i < n; ++i)
+          {
+            F[i]     = u_dot[i] - v[i];
+            F[n + i] = Fv[i];
+          }
+        for (const auto &p : problem.prescribed_values(lambda(t)))
+          F[p.first] = u[p.first] - p.second;
+        for (const auto &p : prescribed_velocity(t))
+          F[n + p.first] = v[p.first] - p.second;
+        return 0;
+      };
+      ida.setup_jacobian = [&](const double          t,
+                               const Vector<double> &y,
+                               const Vector<double> &,
+                               const double alpha) {
+        Vector<double> u, v;
+        split(y, u, v);
+        problem.update_sparsity_pattern(u);
+        J.reinit(problem.sparsity_pattern());
+        if (!problem.assemble(u, lambda(t), R, &J))
+          return 1;
+        // K + alpha^2 M + alpha C
+        const double m = alpha * alpha + alpha * parameters.rayleigh_alpha;
+        for (auto it = M.begin(); it != M.end(); ++it)
+          J.add(it->row(), it->column(), m * it->value());
+        if (parameters.rayleigh_beta != 0.)
+          for (auto it = K0.begin(); it != K0.end(); ++it)
+            J.add(it->row(),
+                  it->column(),
+                  alpha * parameters.rayleigh_beta * it->value());
+        // prescribed rows: identity (the right-hand side is set per solve)
+        fixed.clear();
+        for (const auto &p : problem.prescribed_values(lambda(t)))
+          {
+            fixed[p.first] = 0.;
+            for (auto it = J.begin(p.first); it != J.end(p.first); ++it)
+              it->value() = 0.;
+            J.set(p.first, p.first, 1.);
+          }
+        alpha_ida = alpha;
+        J_inverse.initialize(J);
+        ++n_jacobian_setups;
+        return 0;
+      };
+      ida.solve_with_jacobian =
+        [&](const Vector<double> &rhs, Vector<double> &dst, const double) {
+          Vector<double> r_u, r_v;
+          split(rhs, r_u, r_v);
+          // b = r_v + (alpha M + C) r_u on the free rows, r_u on the fixed
+          Vector<double> b(r_v), du(n);
+          M.vmult(tmp, r_u);
+          b.add(alpha_ida, tmp);
+          damping_vmult(tmp, r_u);
+          b += tmp;
+          for (const auto &p : fixed)
+            b[p.first] = r_u[p.first];
+          J_inverse.vmult(du, b);
+          for (types::global_dof_index i = 0; i < n; ++i)
+            {
+              dst[i]     = du[i];
+              dst[n + i] = alpha_ida * du[i] - r_u[i];
+            }
+          for (const auto &p : fixed)
+            dst[n + p.first] = r_v[p.first];
+          return 0;
+        };
+      ida.differential_components = [&]() {
+        IndexSet differential(2 * n);
+        differential.add_range(0, 2 * n);
+        IndexSet algebraic(2 * n);
+        for (const auto &p : problem.prescribed_values(lambda(s.t)))
+          {
+            algebraic.add_index(p.first);
+            algebraic.add_index(n + p.first);
+          }
+        differential.subtract_set(algebraic);
+        return differential;
+      };
+      ida.output_step = [&](const double          t,
+                            const Vector<double> &y,
+                            const Vector<double> &y_dot,
+                            const unsigned int) {
+        State o;
+        split(y, o.u, o.v);
+        Vector<double> u_dot;
+        split(y_dot, u_dot, o.a);
+        o.t = t;
+        if (output)
+          output(o);
+      };
+
+      // consistent initial values: y_dot = (v, a) with M a = -R - C v
+      Vector<double> y(2 * n), y_dot(2 * n);
+      {
+        SparseMatrix<double> A(problem.sparsity_pattern());
+        problem.assemble(s.u, lambda(s.t), R, nullptr);
+        for (auto it = M.begin(); it != M.end(); ++it)
+          A.add(it->row(), it->column(), it->value());
+        Vector<double> rhs(R), a(n);
+        damping_vmult(tmp, s.v);
+        rhs += tmp;
+        rhs *= -1.;
+        std::map<types::global_dof_index, double> zero;
+        for (const auto &p : problem.prescribed_values(lambda(s.t)))
+          zero[p.first] = 0.;
+        MatrixTools::apply_boundary_values(zero, A, a, rhs, true);
+        SparseDirectUMFPACK A_inverse;
+        A_inverse.initialize(A);
+        A_inverse.vmult(a, rhs);
+        for (types::global_dof_index i = 0; i < n; ++i)
+          {
+            y[i]         = s.u[i];
+            y[n + i]     = s.v[i];
+            y_dot[i]     = s.v[i];
+            y_dot[n + i] = a[i];
+          }
+      }
+      const unsigned int steps = ida.solve_dae(y, y_dot);
+      split(y, s.u, s.v);
+      Vector<double> u_dot;
+      split(y_dot, u_dot, s.a);
+      s.t = data.final_time;
+      return steps;
+    }
+  } // namespace Dynamics
+} // namespace TissueContact
