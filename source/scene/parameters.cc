@@ -450,11 +450,22 @@ namespace TissueContact
       prm.declare_entry("Scheme",
                         "Newmark",
                         Patterns::Selection(
-                          "Newmark|implicit Euler|central difference"),
+                          "Newmark|implicit Euler|central difference|IDA"),
                         "Newmark (beta, gamma below; average acceleration by "
                         "default: no numerical damping), implicit Euler "
                         "(dissipative), central difference (explicit, lumped "
-                        "mass, stable below 2/omega_max).");
+                        "mass, stable below 2/omega_max), IDA (SUNDIALS' "
+                        "variable-order BDF with error control; settings in "
+                        "the subsection IDA, whose times are replaced by End "
+                        "time and Output interval).");
+      {
+        // deal.II's IDA entries, bound to a dummy object; parse() reads
+        // them back by name
+        static SUNDIALS::IDA<Vector<double>>::AdditionalData declared;
+        prm.enter_subsection("IDA");
+        declared.add_parameters(prm);
+        prm.leave_subsection();
+      }
       prm.declare_entry("Time step", "0.01", Patterns::Double(0.), "");
       prm.declare_entry("End time", "1", Patterns::Double(0.), "");
       prm.declare_entry("Minimum time step",
@@ -497,11 +508,31 @@ namespace TissueContact
     TimeIntegrationParameters::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Time integration");
-      dynamic                 = prm.get("Analysis") == "dynamic";
-      integrator.scheme       = Dynamics::scheme_from_string(prm.get("Scheme"));
-      time_step               = prm.get_double("Time step");
-      end_time                = prm.get_double("End time");
-      integrator.minimum_step = prm.get_double("Minimum time step");
+      dynamic           = prm.get("Analysis") == "dynamic";
+      use_ida           = prm.get("Scheme") == "IDA";
+      integrator.scheme = use_ida ?
+                            Dynamics::Scheme::implicit_euler :
+                            Dynamics::scheme_from_string(prm.get("Scheme"));
+      prm.enter_subsection("IDA");
+      prm.enter_subsection("Error control");
+      ida.absolute_tolerance = prm.get_double("Absolute error tolerance");
+      ida.relative_tolerance = prm.get_double("Relative error tolerance");
+      ida.ignore_algebraic_terms_for_errors =
+        prm.get_bool("Ignore algebraic terms for error computations");
+      prm.leave_subsection();
+      prm.enter_subsection("Running parameters");
+      ida.initial_step_size = prm.get_double("Initial step size");
+      ida.minimum_step_size = prm.get_double("Minimum step size");
+      ida.maximum_order     = prm.get_integer("Maximum order of BDF");
+      ida.maximum_non_linear_iterations =
+        prm.get_integer("Maximum number of nonlinear iterations");
+      prm.leave_subsection();
+      prm.leave_subsection();
+      ida.ic_type    = SUNDIALS::IDA<Vector<double>>::AdditionalData::none;
+      ida.reset_type = SUNDIALS::IDA<Vector<double>>::AdditionalData::none;
+      time_step      = prm.get_double("Time step");
+      end_time       = prm.get_double("End time");
+      integrator.minimum_step   = prm.get_double("Minimum time step");
       integrator.growth_factor  = prm.get_double("Growth factor");
       integrator.maximum_step   = time_step;
       integrator.beta           = prm.get_double("Newmark beta");
@@ -512,6 +543,9 @@ namespace TissueContact
       lumped_mass               = prm.get("Mass") == "lumped";
       output_interval           = prm.get_double("Output interval");
       prm.leave_subsection();
+      ida.initial_time  = 0.;
+      ida.final_time    = end_time;
+      ida.output_period = output_interval > 0. ? output_interval : time_step;
       AssertThrow(!dynamic || (time_step > 0. && end_time > 0.),
                   ExcMessage("Time integration: a dynamic analysis needs "
                              "Time step > 0 and End time > 0"));

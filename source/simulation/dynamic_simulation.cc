@@ -3,6 +3,7 @@
 #include <fstream>
 #include <iomanip>
 #include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/dynamics/ida_integrator.h>
 #include <tissue_contact/dynamics/mass_matrix.h>
 #include <tissue_contact/output/vtu_writer.h>
 #include <tissue_contact/simulation/dynamic_simulation.h>
@@ -38,15 +39,22 @@ namespace TissueContact
     static const char *names[] = {"implicit Euler",
                                   "Newmark",
                                   "central difference"};
+    const std::string  scheme =
+      ti.use_ida ? "IDA" : names[int(ti.integrator.scheme)];
     out << "TissueContact dynamic analysis\n"
         << "  mesh: " << problem.get_scene().triangulation.n_active_cells()
         << " tetrahedra; P" << p.degree << " elements, " << disc.n_dofs()
         << " unknowns\n"
-        << "  scheme: " << names[int(ti.integrator.scheme)] << ", time step "
-        << ti.time_step << ", end time " << ti.end_time << ", "
+        << "  scheme: " << scheme << ", time step " << ti.time_step
+        << ", end time " << ti.end_time << ", "
         << (M.empty() ? "lumped" : "consistent") << " mass "
         << M_lumped.mean_value() * M_lumped.size() / 3. << "\n";
 
+    if (ti.use_ida)
+      {
+        run_ida();
+        return;
+      }
     Dynamics::TimeIntegrator integrator(ti.integrator,
                                         problem,
                                         M.empty() ? nullptr : &M,
@@ -115,6 +123,67 @@ namespace TissueContact
               ", " + std::to_string(timer.wall_time()) + " s wall time" :
               std::string())
         << "\n"
+        << "  time history: " << csv_name << "\n";
+    if (p.output.write_vtu)
+      out << "  results: " << vtu.pvd_file() << " (open in ParaView)\n";
+  }
+} // namespace TissueContact
+
+
+namespace TissueContact
+{
+  void
+  DynamicSimulation::run_ida()
+  {
+    const auto &p    = problem.get_scene().parameters;
+    const auto &ti   = p.time_integration;
+    const auto &disc = problem.discretization();
+    AssertThrow(!M.empty(),
+                ExcMessage("Time integration: IDA needs the consistent mass "
+                           "(Mass = consistent)"));
+    Dynamics::IdaIntegrator ida(ti.ida, ti.integrator, problem, M);
+    s.u.reinit(disc.n_dofs());
+    s.v.reinit(disc.n_dofs());
+    s.t = 0.;
+
+    std::filesystem::create_directories(p.output.directory);
+    const std::string csv_name =
+      p.output.directory + "/" + p.output.base_name + "-time.csv";
+    std::ofstream csv(csv_name);
+    csv << "output,time,kinetic_energy\n";
+    Output::VtuSeriesWriter vtu(p.output.directory, p.output.base_name);
+    const auto              depth =
+      problem.contact_assembler() != nullptr && !p.contact.pairs.empty() ?
+                     &problem.contact_assembler()->vertex_depth() :
+                     nullptr;
+    out << "  output   time         kinetic energy\n";
+    unsigned int outputs = 0;
+    try
+      {
+        ida.integrate(s, [&](const Dynamics::State &o) {
+          Vector<double> Mv(o.v.size());
+          M.vmult(Mv, o.v);
+          const double kinetic = 0.5 * (o.v * Mv);
+          csv << outputs << ',' << o.t << ',' << kinetic << '\n';
+          out << std::setw(8) << outputs << std::scientific
+              << std::setprecision(4) << std::setw(13) << o.t << "  " << kinetic
+              << std::defaultfloat << std::setprecision(6) << "\n";
+          ++outputs;
+          if (p.output.write_vtu)
+            vtu.write(disc, problem.elastic_assembler(), o.u, o.t, depth);
+        });
+      }
+    catch (const std::exception &e)
+      {
+        AssertThrow(false,
+                    ExcMessage(
+                      "IDA failed: " + error_message(e) +
+                      (p.output.write_vtu ?
+                         "; the outputs so far are kept in " + vtu.pvd_file() :
+                         std::string())));
+      }
+    out << "Reached t = " << s.t << " (IDA: " << ida.n_jacobian_setups
+        << " Jacobian setups)\n"
         << "  time history: " << csv_name << "\n";
     if (p.output.write_vtu)
       out << "  results: " << vtu.pvd_file() << " (open in ParaView)\n";

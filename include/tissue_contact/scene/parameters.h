@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/sundials/ida.h>
 #include <string>
 #include <tissue_contact/dynamics/time_integrator.h>
 #include <tissue_contact/scene/prescribed_motion.h>
@@ -131,6 +132,11 @@ namespace TissueContact
       double                               end_time        = 1.;
       double                               output_interval = 0.;
       bool                                 lumped_mass     = false;
+      /** Scheme = IDA: SUNDIALS' IDA with these settings (subsection
+       * "Time integration/IDA"; its times come from End time and Output
+       * interval). */
+      bool                                          use_ida = false;
+      SUNDIALS::IDA<Vector<double>>::AdditionalData ida;
 
       static void
       declare(ParameterHandler &prm);

@@ -33,6 +33,10 @@ namespace TissueContact
     }
 
   private:
+    /** run() with SUNDIALS' IDA (Scheme = IDA). */
+    void
+    run_ida();
+
     std::ostream        &out;
     StaticSimulation     problem;
     SparseMatrix<double> M;
