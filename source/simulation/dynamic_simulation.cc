@@ -28,6 +28,30 @@ namespace TissueContact
   }
 
 
+  std::ofstream
+  DynamicSimulation::open_time_history(const std::string &columns,
+                                       std::string       &name) const
+  {
+    const auto &o = problem.get_scene().parameters.output;
+    std::filesystem::create_directories(o.directory);
+    name = o.directory + "/" + o.base_name + "-time.csv";
+    std::ofstream csv(name);
+    csv << columns << "\n";
+    return csv;
+  }
+
+
+  const std::vector<double> *
+  DynamicSimulation::depth_field() const
+  {
+    const auto *contact = problem.contact_assembler();
+    return contact != nullptr &&
+               !problem.get_scene().parameters.contact.pairs.empty() ?
+             &contact->vertex_depth() :
+             nullptr;
+  }
+
+
   void
   DynamicSimulation::run()
   {
@@ -64,16 +88,11 @@ namespace TissueContact
     s.t = 0.;
     integrator.initialize(s);
 
-    std::filesystem::create_directories(p.output.directory);
-    const std::string csv_name =
-      p.output.directory + "/" + p.output.base_name + "-time.csv";
-    std::ofstream csv(csv_name);
-    csv << "step,time,time_step,newton_iterations,kinetic_energy,energy\n";
+    std::string   csv_name;
+    std::ofstream csv = open_time_history(
+      "step,time,time_step,newton_iterations,kinetic_energy,energy", csv_name);
     Output::VtuSeriesWriter vtu(p.output.directory, p.output.base_name);
-    const auto              depth =
-      problem.contact_assembler() != nullptr && !p.contact.pairs.empty() ?
-                     &problem.contact_assembler()->vertex_depth() :
-                     nullptr;
+    const auto              depth = depth_field();
     if (p.output.write_vtu)
       vtu.write(disc, problem.elastic_assembler(), s.u, s.t, depth);
 
@@ -146,16 +165,11 @@ namespace TissueContact
     s.v.reinit(disc.n_dofs());
     s.t = 0.;
 
-    std::filesystem::create_directories(p.output.directory);
-    const std::string csv_name =
-      p.output.directory + "/" + p.output.base_name + "-time.csv";
-    std::ofstream csv(csv_name);
-    csv << "output,time,kinetic_energy\n";
+    std::string   csv_name;
+    std::ofstream csv =
+      open_time_history("output,time,kinetic_energy", csv_name);
     Output::VtuSeriesWriter vtu(p.output.directory, p.output.base_name);
-    const auto              depth =
-      problem.contact_assembler() != nullptr && !p.contact.pairs.empty() ?
-                     &problem.contact_assembler()->vertex_depth() :
-                     nullptr;
+    const auto              depth = depth_field();
     out << "  output   time         kinetic energy\n";
     unsigned int outputs = 0;
     try

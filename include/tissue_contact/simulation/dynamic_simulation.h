@@ -1,8 +1,11 @@
 #pragma once
 
+#include <fstream>
 #include <ostream>
+#include <string>
 #include <tissue_contact/dynamics/time_integrator.h>
 #include <tissue_contact/simulation/static_simulation.h>
+#include <vector>
 
 namespace TissueContact
 {
@@ -36,6 +39,15 @@ namespace TissueContact
     /** run() with SUNDIALS' IDA (Scheme = IDA). */
     void
     run_ida();
+
+    /** Create the output folder and <base>-time.csv with the header
+     * @p columns; @p name gets its path. */
+    std::ofstream
+    open_time_history(const std::string &columns, std::string &name) const;
+
+    /** The material depth for the VTU output (scenes with body pairs). */
+    const std::vector<double> *
+    depth_field() const;
 
     std::ostream        &out;
     StaticSimulation     problem;
