@@ -1,4 +1,5 @@
 #include <deal.II/fe/fe_values.h>
+#include <limits>
 #include <tissue_contact/dynamics/mass_matrix.h>
 
 namespace TissueContact
@@ -97,6 +98,30 @@ namespace TissueContact
                              }
                          });
       return m_lumped;
+    }
+
+
+    double
+    stable_time_step_estimate(
+      const Elasticity::Discretization                         &disc,
+      const std::map<types::material_id, Elasticity::BodyData> &bodies)
+    {
+      double dt = std::numeric_limits<double>::infinity();
+      for (const auto &cell : disc.dof_handler.active_cell_iterators())
+        {
+          const auto body = bodies.find(cell->material_id());
+          if (body == bodies.end() || !(body->second.density > 0.) ||
+              body->second.material == nullptr)
+            continue;
+          const auto [mu, lambda] = body->second.material->lame_equivalents();
+          const double c = std::sqrt((lambda + 2. * mu) / body->second.density);
+          double       largest_face = 0.;
+          for (const auto &face : cell->face_iterators())
+            largest_face = std::max(largest_face, face->measure());
+          const double h = 3. * cell->measure() / largest_face;
+          dt             = std::min(dt, h / (disc.degree * c));
+        }
+      return dt;
     }
   } // namespace Dynamics
 } // namespace TissueContact

@@ -400,6 +400,14 @@ namespace TissueContact
       s.v.add(0.5 * dt, s.a);
       s.t += dt;
       const double kinetic = kinetic_energy(s);
+      // a body starting from rest at its reference state has no initial
+      // energy to compare with: the first step's kinetic energy sets the
+      // scale then (an instability grows geometrically from any scale)
+      if (first_explicit_step)
+        {
+          reference_energy    = std::max(reference_energy, kinetic);
+          first_explicit_step = false;
+        }
       if (!valid || !std::isfinite(kinetic) ||
           kinetic > parameters.blow_up_factor * reference_energy)
         {

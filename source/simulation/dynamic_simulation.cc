@@ -73,6 +73,20 @@ namespace TissueContact
         << ", end time " << ti.end_time << ", "
         << (M.empty() ? "lumped" : "consistent") << " mass "
         << M_lumped.mean_value() * M_lumped.size() / 3. << "\n";
+    if (ti.integrator.scheme == Dynamics::Scheme::central_difference &&
+        !ti.use_ida)
+      {
+        const double estimate =
+          Dynamics::stable_time_step_estimate(disc,
+                                              problem.get_scene().body_data());
+        out << "  stable step estimate (smallest altitude / wave speed): "
+            << estimate << " (keep the step below 0.9 of it)"
+            << (ti.time_step > 0.9 * estimate ?
+                  " -- the time step is above: the run may be stopped as "
+                  "unstable" :
+                  "")
+            << "\n";
+      }
 
     if (ti.use_ida)
       {

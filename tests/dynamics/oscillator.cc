@@ -117,6 +117,12 @@ main(int argc, char **argv)
               << std::setprecision(6) << std::endl;
     }
 
+  deallog << "element-size estimate h/c / (2/omega_max) = "
+          << std::setprecision(3)
+          << Dynamics::stable_time_step_estimate(sim.discretization(),
+                                                 sim.get_scene().body_data()) /
+               dt_stable
+          << std::setprecision(6) << std::endl;
   deallog << "central difference, lumped mass, 2 periods; stable estimate "
              "2/omega_max = "
           << std::setprecision(4) << dt_stable

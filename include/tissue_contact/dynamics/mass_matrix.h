@@ -37,5 +37,19 @@ namespace TissueContact
     lumped_mass(
       const Elasticity::Discretization                         &disc,
       const std::map<types::material_id, Elasticity::BodyData> &bodies);
+
+    /**
+     * The stable step of the explicit central difference scheme estimated
+     * from element sizes and wave speeds (doc/theory/06-dynamics.md, sec.
+     * 4): the smallest over the cells with positive density of
+     * @f$h_e/(p\,c_e)@f$, with @f$h_e = 3V_e/A_{e,\max}@f$ the smallest
+     * altitude, p the polynomial degree and
+     * @f$c_e = \sqrt{(\lambda + 2\mu)/\rho_0}@f$ the dilatational wave
+     * speed of the body's small-strain Lame parameters.
+     */
+    double
+    stable_time_step_estimate(
+      const Elasticity::Discretization                         &disc,
+      const std::map<types::material_id, Elasticity::BodyData> &bodies);
   } // namespace Dynamics
 } // namespace TissueContact

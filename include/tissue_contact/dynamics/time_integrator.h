@@ -111,7 +111,8 @@ namespace TissueContact
       /** beta K_0 for the Rayleigh damping, with its own pattern. */
       SparsityPattern      damping_pattern;
       SparseMatrix<double> K0;
-      double               reference_energy = 0.;
+      double               reference_energy    = 0.;
+      bool                 first_explicit_step = true;
 
       /** @f$C x@f$ */
       void
