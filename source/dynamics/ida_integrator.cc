@@ -1,5 +1,7 @@
+#include <cmath>
 #include <deal.II/base/index_set.h>
 #include <deal.II/numerics/matrix_tools.h>
+#include <limits>
 #include <tissue_contact/dynamics/ida_integrator.h>
 
 namespace TissueContact
@@ -176,7 +178,9 @@ namespace TissueContact
         differential.subtract_set(algebraic);
         return differential;
       };
-      ida.output_step = [&](const double          t,
+      double last_output  = s.t;
+      double off_schedule = std::numeric_limits<double>::infinity();
+      ida.output_step     = [&](const double          t,
                             const Vector<double> &y,
                             const Vector<double> &y_dot,
                             const unsigned int) {
@@ -184,7 +188,16 @@ namespace TissueContact
         split(y, o.u, o.v);
         Vector<double> u_dot;
         split(y_dot, u_dot, o.a);
-        o.t = t;
+        o.t         = t;
+        last_output = t;
+        // IDA returns before an output time only after a failure it
+        // reports on the screen alone (too many steps, a failed step)
+        const double k =
+          std::round((t - data.initial_time) / data.output_period);
+        if (std::abs(t - data.initial_time - k * data.output_period) >
+              1e-8 * data.output_period &&
+            std::abs(t - data.final_time) > 1e-8 * data.output_period)
+          off_schedule = std::min(off_schedule, t);
         if (output)
           output(o);
       };
@@ -216,6 +229,15 @@ namespace TissueContact
           }
       }
       const unsigned int steps = ida.solve_dae(y, y_dot);
+      // IDA reports some failures (too many steps before an output time)
+      // only on the screen: check that it got to the end
+      const double stopped = std::min(off_schedule, last_output);
+      AssertThrow(std::isinf(off_schedule) &&
+                    last_output >= data.final_time - 1e-9 * data.final_time,
+                  ExcMessage("IDA stopped at t = " + std::to_string(stopped) +
+                             " before an output time (too many steps or a "
+                             "failed step: loosen the tolerances or shorten "
+                             "the output interval)"));
       split(y, s.u, s.v);
       Vector<double> u_dot;
       split(y_dot, u_dot, s.a);
