@@ -241,6 +241,7 @@ namespace TissueContact
       , problem(problem)
       , M(mass_consistent)
       , M_lumped(mass_lumped)
+      , newton(parameters.newton)
     {
       AssertThrow(M != nullptr || M_lumped != nullptr,
                   ExcMessage("time integration needs a mass matrix"));
@@ -356,9 +357,8 @@ namespace TissueContact
       const double lambda = load_factor(s.t + dt);
       for (const auto &t : problem.prescribed_values(lambda))
         u[t.first] = t.second;
-      Solvers::IncrementalNewtonSolver newton(parameters.newton);
-      Solvers::SolveStatistics         statistics;
-      const std::string                failure =
+      Solvers::SolveStatistics statistics;
+      const std::string        failure =
         newton.solve_at(effective, u, lambda, 0, statistics);
       last_iterations = statistics.newton_iterations;
       if (!failure.empty())

@@ -169,4 +169,41 @@ end
       return (phi * Mu) / phi_M_phi;
     }
   };
+
+  /** The falling block with its consistent mass and its mean height
+   * (z displacement of the centre of mass). */
+  struct FallingBlock
+  {
+    std::ostringstream      log;
+    StaticSimulation        sim;
+    types::global_dof_index n;
+    SparseMatrix<double>    M;
+    Vector<double>          ez;
+    double                  mass = 0.;
+
+    FallingBlock()
+      : sim(Scene::SceneParameters::from_string(falling_block), log)
+      , n(sim.n_dofs())
+      , M(sim.discretization().sparsity_pattern)
+      , ez(n)
+    {
+      Dynamics::assemble_consistent_mass(sim.discretization(),
+                                         sim.get_scene().body_data(),
+                                         M);
+      const auto component = sim.discretization().dof_components();
+      for (types::global_dof_index i = 0; i < n; ++i)
+        ez[i] = component[i] == 2 ? 1. : 0.;
+      Vector<double> Mu(n);
+      M.vmult(Mu, ez);
+      mass = ez * Mu;
+    }
+
+    double
+    mean_height(const Vector<double> &u) const
+    {
+      Vector<double> Mu(n);
+      M.vmult(Mu, u);
+      return (ez * Mu) / mass;
+    }
+  };
 } // namespace DynamicsTestScenes

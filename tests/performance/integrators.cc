@@ -38,26 +38,14 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ostringstream               log;
-  StaticSimulation                 sim(Scene::SceneParameters::from_string(
-                         DynamicsTestScenes::falling_block),
-                       log);
-  const auto                       n = sim.n_dofs();
-  SparseMatrix<double>             M(sim.discretization().sparsity_pattern);
-  Dynamics::assemble_consistent_mass(sim.discretization(),
-                                     sim.get_scene().body_data(),
-                                     M);
-  const Vector<double> M_lumped =
+  DynamicsTestScenes::FallingBlock block;
+  auto                            &sim = block.sim;
+  const auto                       n   = block.n;
+  const auto                      &M   = block.M;
+  const Vector<double>             M_lumped =
     Dynamics::lumped_mass(sim.discretization(), sim.get_scene().body_data());
-  const auto     component = sim.discretization().dof_components();
-  Vector<double> ez(n), Mu(n);
-  for (types::global_dof_index i = 0; i < n; ++i)
-    ez[i] = component[i] == 2 ? 1. : 0.;
-  M.vmult(Mu, ez);
-  const double mass   = ez * Mu;
-  const auto   height = [&](const Vector<double> &u) {
-    M.vmult(Mu, u);
-    return (ez * Mu) / mass;
+  const auto height = [&](const Vector<double> &u) {
+    return block.mean_height(u);
   };
 
   Dynamics::TimeIntegrator::Parameters base;

@@ -111,8 +111,11 @@ namespace TissueContact
       /** beta K_0 for the Rayleigh damping, with its own pattern. */
       SparsityPattern      damping_pattern;
       SparseMatrix<double> K0;
-      double               reference_energy    = 0.;
-      bool                 first_explicit_step = true;
+      /** One Newton solver for all steps: its matrix is allocated once
+       * (it is rebuilt only when the problem's sparsity pattern changes). */
+      Solvers::IncrementalNewtonSolver newton;
+      double                           reference_energy    = 0.;
+      bool                             first_explicit_step = true;
 
       /** @f$C x@f$ */
       void
