@@ -11,6 +11,11 @@
 #include <fstream>
 #include <iomanip>
 #include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace TissueContactTests
 {
@@ -82,4 +87,37 @@ namespace TissueContactTests
         return "< 1e" + std::to_string(k);
     return "= " + std::to_string(e) + " (large)";
   }
+
+#ifdef SOURCE_DIR
+  /** The text of the project's prm/<name> for a test run in the build
+   * tree: its meshes read from the source tree, every @p replacements
+   * (from, to) applied to each occurrence of from (which must occur), and
+   * the output quiet: no VTU, no timing, files in the current folder. */
+  inline std::string
+  project_prm(
+    const std::string                                      &name,
+    const std::vector<std::pair<std::string, std::string>> &replacements = {})
+  {
+    const std::string root = std::string(SOURCE_DIR) + "/../../";
+    std::ifstream     in(root + "prm/" + name);
+    if (!in)
+      throw std::runtime_error("cannot read prm/" + name);
+    std::ostringstream text;
+    text << in.rdbuf();
+    std::string s           = text.str();
+    const auto  replace_all = [&](const std::string &from,
+                                 const std::string &to) {
+      std::size_t pos = s.find(from);
+      if (pos == std::string::npos)
+        throw std::runtime_error("prm/" + name + " has no '" + from + "'");
+      for (; pos != std::string::npos; pos = s.find(from, pos + to.size()))
+        s.replace(pos, from.size(), to);
+    };
+    for (const auto &r : replacements)
+      replace_all(r.first, r.second);
+    replace_all("../meshes/", root + "meshes/");
+    return s + "\nsubsection Output\n  set Write VTU = false\n"
+               "  set Print timing = false\n  set Directory = .\nend\n";
+  }
+#endif
 } // namespace TissueContactTests

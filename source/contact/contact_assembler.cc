@@ -479,15 +479,27 @@ namespace TissueContact
     double
     ContactAssembler::energy(const Vector<double> &u) const
     {
-      double W = 0.;
+      const std::vector<double> W = energies(u);
+      return std::accumulate(W.begin(), W.end(), 0.);
+    }
+
+
+    std::vector<double>
+    ContactAssembler::energies(const Vector<double> &u) const
+    {
+      std::vector<double> W(pairs.size() + obstacles.size(), 0.);
       for (unsigned int t = 0; t < triangles.size(); ++t)
         {
           const std::array<Point<3>, 3> tri = {position(triangles[t][0], u),
                                                position(triangles[t][1], u),
                                                position(triangles[t][2], u)};
-          for (const auto &o : obstacles)
-            if (o.bodies.empty() || o.bodies.count(triangle_body[t]) > 0)
-              W += obstacle_energy<double>(o.obstacle, tri, o.penalty);
+          for (unsigned int i = 0; i < obstacles.size(); ++i)
+            {
+              const auto &o = obstacles[i];
+              if (o.bodies.empty() || o.bodies.count(triangle_body[t]) > 0)
+                W[pairs.size() + i] +=
+                  obstacle_energy<double>(o.obstacle, tri, o.penalty);
+            }
         }
       if (!pairs.empty())
         {
@@ -500,14 +512,14 @@ namespace TissueContact
                 const unsigned int k,
                 const BodyContact &p) {
               const auto [tet, tri, g] = pair_geometry(x, t, k);
-              W += p.point_collocation ?
-                     collocation_energy<double>(tet, tri, g, p.penalty) :
-                     penalty_energy<double>(tet, tri, g, p.penalty);
+              W[&p - pairs.data()] +=
+                p.point_collocation ?
+                  collocation_energy<double>(tet, tri, g, p.penalty) :
+                  penalty_energy<double>(tet, tri, g, p.penalty);
             });
         }
       return W;
     }
-
 
 
     Tensor<1, 3>

@@ -53,7 +53,10 @@ namespace TissueContact
 
 
   void
-  DynamicSimulation::run()
+  DynamicSimulation::run(
+    const std::function<void(const Dynamics::TimeIntegrator &,
+                             const Dynamics::State &,
+                             const Dynamics::State &)> &on_step)
   {
     const auto &p    = problem.get_scene().parameters;
     const auto &ti   = p.time_integration;
@@ -102,24 +105,37 @@ namespace TissueContact
     s.t = 0.;
     integrator.initialize(s);
 
-    std::string   csv_name;
-    std::ofstream csv = open_time_history(
-      "step,time,time_step,newton_iterations,kinetic_energy,energy", csv_name);
+    // one column per contact interaction: pairs as contact_<surface body>_
+    // <volume body>, obstacles as obstacle_<index>
+    const auto *contact = problem.contact_assembler();
+    std::string columns =
+      "step,time,time_step,newton_iterations,kinetic_energy,energy,"
+      "dissipated";
+    for (const auto &pair : p.contact.pairs)
+      columns += ",contact_" + std::to_string(pair.surface_body) + "_" +
+                 std::to_string(pair.volume_body);
+    for (unsigned int i = 0; i < p.contact.obstacles.size(); ++i)
+      columns += ",obstacle_" + std::to_string(i);
+    std::string             csv_name;
+    std::ofstream           csv = open_time_history(columns, csv_name);
     Output::VtuSeriesWriter vtu(p.output.directory, p.output.base_name);
     const auto              depth = depth_field();
     if (p.output.write_vtu)
       vtu.write(disc, problem.elastic_assembler(), s.u, s.t, depth);
 
     out << "  step     time         dt           Newton  kinetic energy\n";
-    unsigned int step = 0, cutbacks = 0, iterations = 0;
-    double       dt = ti.time_step, next_output = ti.output_interval;
+    unsigned int   step = 0, cutbacks = 0, iterations = 0;
+    double         dt = ti.time_step, next_output = ti.output_interval;
+    double         dissipated = 0.;
+    Vector<double> v_mid(disc.n_dofs()), Cv(disc.n_dofs());
     try
       {
         while (s.t < ti.end_time * (1. - 1e-12))
           {
-            const double request = std::min(dt, ti.end_time - s.t);
-            double       next    = request;
-            const double taken   = integrator.step(s, request, next);
+            const double          request = std::min(dt, ti.end_time - s.t);
+            double                next    = request;
+            const Dynamics::State before  = s;
+            const double          taken   = integrator.step(s, request, next);
             cutbacks += (taken < request);
             iterations += integrator.last_iterations;
             dt = std::max(next, taken);
@@ -127,9 +143,22 @@ namespace TissueContact
             const double kinetic = integrator.kinetic_energy(s);
             const double energy =
               kinetic + problem.energy(s.u, integrator.load_factor(s.t));
+            // the damping's work over the step at the mid-step velocity
+            // (exact for the average-acceleration Newmark scheme)
+            v_mid = before.v;
+            v_mid += s.v;
+            v_mid *= 0.5;
+            integrator.damping_vmult(Cv, v_mid);
+            dissipated += taken * (v_mid * Cv);
             csv << step << ',' << s.t << ',' << taken << ','
                 << integrator.last_iterations << ',' << kinetic << ',' << energy
-                << '\n';
+                << ',' << dissipated;
+            if (contact != nullptr)
+              for (const double W : contact->energies(s.u))
+                csv << ',' << W;
+            csv << '\n';
+            if (on_step)
+              on_step(integrator, before, s);
             out << std::setw(6) << step << std::scientific
                 << std::setprecision(4) << std::setw(13) << s.t << std::setw(13)
                 << taken << std::setw(6) << integrator.last_iterations << "  "

@@ -7,7 +7,6 @@
 
 #include "../tests.h"
 
-#include <fstream>
 #include <sstream>
 #include <tissue_contact/simulation/dynamic_simulation.h>
 #include <tissue_contact/simulation/static_simulation.h>
@@ -21,16 +20,7 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
-  std::ifstream in(std::string(SOURCE_DIR) + "/../../prm/sagging_bars.prm");
-  std::ostringstream text;
-  text << in.rdbuf();
-  std::string       prm  = text.str();
-  const std::string mesh = "../meshes/sagging_bars.msh";
-  prm.replace(prm.find(mesh),
-              mesh.size(),
-              std::string(SOURCE_DIR) + "/../../meshes/sagging_bars.msh");
-  prm += "\nsubsection Output\n  set Write VTU = false\n  set Print timing "
-         "= false\n  set Directory = .\nend\n";
+  const std::string prm = project_prm("sagging_bars.prm");
 
   std::ostringstream log;
   DynamicSimulation  dynamic(Scene::SceneParameters::from_string(prm), log);

@@ -206,4 +206,47 @@ end
       return (ez * Mu) / mass;
     }
   };
+
+  /** The rods of prm/falling_rods.prm (radius 0.06, length 1 along
+   * n = (1, 0, 1)/sqrt(2) from the slope): the DoFs of each rod's tip face
+   * (support points at distance 1 from the slope along n, grouped into
+   * rods by proximity) and the down-slope deflection of a tip, the mean
+   * displacement of its face along (1, 0, -1)/sqrt(2). */
+  struct RodTips
+  {
+    static constexpr double radius = 0.06, length = 1.;
+    std::vector<Point<3>>   centres;
+    std::vector<std::vector<types::global_dof_index>> dofs;
+    std::vector<unsigned int>                         component;
+
+    explicit RodTips(const Elasticity::Discretization &disc)
+      : component(disc.dof_components())
+    {
+      const auto   X = disc.support_points();
+      const double c = std::sqrt(0.5);
+      for (types::global_dof_index i = 0; i < X.size(); ++i)
+        if (c * (X[i][0] + X[i][2]) > length - 1e-9)
+          {
+            unsigned int k = 0;
+            while (k < centres.size() &&
+                   X[i].distance(centres[k]) > 2. * radius)
+              ++k;
+            if (k == centres.size())
+              {
+                centres.push_back(X[i]);
+                dofs.emplace_back();
+              }
+            dofs[k].push_back(i);
+          }
+    }
+
+    double
+    deflection(const Vector<double> &u, const unsigned int k) const
+    {
+      Tensor<1, 3> mean;
+      for (const auto i : dofs[k])
+        mean[component[i]] += u[i];
+      return 3. * std::sqrt(0.5) * (mean[0] - mean[2]) / dofs[k].size();
+    }
+  };
 } // namespace DynamicsTestScenes

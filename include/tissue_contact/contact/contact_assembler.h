@@ -107,6 +107,11 @@ namespace TissueContact
       double
       energy(const Vector<double> &u) const;
 
+      /** The penalty energy of each interaction at @p u: the body pairs in
+       * their declared order, then the obstacles; energy() is the sum. */
+      std::vector<double>
+      energies(const Vector<double> &u) const;
+
       /** Total force the obstacles exert on the bodies,
        * @f$-\sum_a \partial W/\partial x_a@f$. */
       Tensor<1, 3>

@@ -95,6 +95,11 @@ namespace TissueContact
       void
       mass_vmult(Vector<double> &Mx, const Vector<double> &x) const;
 
+      /** The Rayleigh damping applied to a vector: @p Cx = (alpha M +
+       * beta K_0) x; the power it dissipates at velocity v is v^T C v. */
+      void
+      damping_vmult(Vector<double> &Cx, const Vector<double> &x) const;
+
       /** The load factor at time @p t (Parameters::ramp_time). */
       double
       load_factor(const double t) const;
@@ -116,10 +121,6 @@ namespace TissueContact
       Solvers::IncrementalNewtonSolver newton;
       double                           reference_energy    = 0.;
       bool                             first_explicit_step = true;
-
-      /** @f$C x@f$ */
-      void
-      damping_vmult(Vector<double> &Cx, const Vector<double> &x) const;
 
       double
       implicit_step(State &s, const double dt);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <fstream>
+#include <functional>
 #include <ostream>
 #include <string>
 #include <tissue_contact/dynamics/time_integrator.h>
@@ -24,10 +25,24 @@ namespace TissueContact
                       std::ostream                 &out);
 
     /** Integrate from rest at the reference configuration to the end
-     * time. Throws (one line) if a step fails below the minimum step or
+     * time; @p on_step, if given, sees every step taken. The time history
+     * (<base>-time.csv) has per step: the kinetic energy, the total energy
+     * (kinetic + elastic + contact - work of the loads), the energy the
+     * damping dissipated so far (their sum stays constant up to the
+     * scheme's error) and the penalty energy of each contact pair and
+     * obstacle. Throws (one line) if a step fails below the minimum step or
      * the explicit scheme blows up; the output written so far is kept. */
     void
-    run();
+    run(const std::function<void(const Dynamics::TimeIntegrator &integrator,
+                                 const Dynamics::State          &before,
+                                 const Dynamics::State &after)> &on_step = {});
+
+    /** The static problem behind it (assembly, contact, energy). */
+    const StaticSimulation &
+    static_problem() const
+    {
+      return problem;
+    }
 
     const Dynamics::State &
     state() const
