@@ -27,7 +27,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
-  const std::string                source(SOURCE_DIR);
+  const std::string                source(SOURCE_DIR "/../..");
   std::ifstream                    in(source + "/prm/stacked_blocks.prm");
   std::stringstream                text;
   text << in.rdbuf();

@@ -1,15 +1,18 @@
 // Benchmark (not a test): the speed/accuracy trade of the time integrators
-// on the block dropped onto a rigid plane (tests/dynamics/scenes.h; the
-// falling-rods scene of issue 4 is not built yet). For each integrator and
-// step: wall time per step and per simulated second, and the error of the
-// block's mean height at t = 0.1, 0.2, 0.3 (through the impact) against
-// Newmark with dt = 1e-4. Writes integrators.csv and, with gnuplot,
-// integrators.png (error against cost) in the current folder.
+// on the falling rods (prm/falling_rods.prm on the 2 x 2 array of
+// meshes/falling_rods_2x2.msh, as tests/dynamics/falling_rods): the lower
+// rods hit the rigid curved bar at t = 0.15, the upper rods hit the lower
+// ones at t = 0.25. For each integrator and step: wall time per step and
+// per simulated second, and the error of the rods' down-slope tip
+// deflections at t = 0.1, 0.2, 0.3, 0.4 against Newmark with dt = 1e-3
+// (largest over rods and times, in rod radii). Writes integrators.csv and,
+// with gnuplot, integrators.png (error against cost) in the current folder.
 //
 //   cmake --build build --target performance
 //   build/tests/performance/integrators
 
 #include "dynamics/scenes.h"
+#include "tests.h"
 
 #include <deal.II/base/timer.h>
 #include <fstream>
@@ -26,11 +29,11 @@ namespace
 {
   struct Run
   {
-    std::string         name;
-    double              dt      = 0.;
-    unsigned int        steps   = 0;
-    double              seconds = 0.;
-    std::vector<double> heights; // at t = 0.1, 0.2, 0.3
+    std::string                      name;
+    double                           dt      = 0.;
+    unsigned int                     steps   = 0;
+    double                           seconds = 0.;
+    std::vector<std::vector<double>> tips; // at t = 0.1, 0.2, 0.3, 0.4
   };
 } // namespace
 
@@ -38,18 +41,29 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  DynamicsTestScenes::FallingBlock block;
-  auto                            &sim = block.sim;
-  const auto                       n   = block.n;
-  const auto                      &M   = block.M;
-  const Vector<double>             M_lumped =
+  const std::string                prm = TissueContactTests::project_prm(
+    "falling_rods.prm", {{"falling_rods.msh", "falling_rods_2x2.msh"}});
+  const auto           parameters = Scene::SceneParameters::from_string(prm);
+  std::ostringstream   log;
+  StaticSimulation     sim(parameters, log);
+  const auto           n = sim.n_dofs();
+  SparseMatrix<double> M(sim.discretization().sparsity_pattern);
+  Dynamics::assemble_consistent_mass(sim.discretization(),
+                                     sim.get_scene().body_data(),
+                                     M);
+  const Vector<double> M_lumped =
     Dynamics::lumped_mass(sim.discretization(), sim.get_scene().body_data());
-  const auto height = [&](const Vector<double> &u) {
-    return block.mean_height(u);
+  const DynamicsTestScenes::RodTips tips(sim.discretization());
+  const auto                        deflections = [&](const Vector<double> &u) {
+    std::vector<double> d;
+    for (unsigned int k = 0; k < tips.centres.size(); ++k)
+      d.push_back(tips.deflection(u, k));
+    return d;
   };
+  const double end_time = 0.4, sample = 0.1;
 
-  Dynamics::TimeIntegrator::Parameters base;
-  base.rayleigh_alpha = 5.;
+  const Dynamics::TimeIntegrator::Parameters base =
+    parameters.time_integration.integrator;
   const auto stepping = [&](const std::string     &name,
                             const Dynamics::Scheme scheme,
                             const double           dt) {
@@ -66,25 +80,33 @@ main(int argc, char **argv)
     s.v.reinit(n);
     integrator.initialize(s);
     Timer  timer;
-    double next = dt, target = 0.1;
-    while (s.t < 0.3 - 1e-12)
+    double next = dt, target = sample;
+    try
       {
-        integrator.step(s, std::min(dt, target - s.t), next);
-        ++r.steps;
-        if (s.t >= target - 1e-12)
+        while (s.t < end_time - 1e-12)
           {
-            r.heights.push_back(height(s.u));
-            target += 0.1;
+            integrator.step(s, std::min(dt, target - s.t), next);
+            ++r.steps;
+            if (s.t >= target - 1e-12)
+              {
+                r.tips.push_back(deflections(s.u));
+                target += sample;
+              }
           }
+      }
+    catch (const std::exception &)
+      {
+        r.name += " (FAILED)";
+        r.tips.clear();
       }
     r.seconds = timer.wall_time();
     return r;
   };
   const auto ida = [&](const double tolerance) {
     SUNDIALS::IDA<Vector<double>>::AdditionalData data;
-    data.final_time         = 0.3;
+    data.final_time         = end_time;
     data.initial_step_size  = 1e-4;
-    data.output_period      = 0.1;
+    data.output_period      = sample;
     data.relative_tolerance = tolerance;
     data.absolute_tolerance = 1e-3 * tolerance;
     data.ic_type    = SUNDIALS::IDA<Vector<double>>::AdditionalData::none;
@@ -101,40 +123,44 @@ main(int argc, char **argv)
       {
         integrator.integrate(s, [&](const Dynamics::State &o) {
           if (o.t > 1e-12)
-            r.heights.push_back(height(o.u));
+            r.tips.push_back(deflections(o.u));
         });
       }
     catch (const std::exception &)
       {
         r.name += " (FAILED)";
-        r.heights.clear();
+        r.tips.clear();
       }
     r.seconds = timer.wall_time();
     r.steps   = integrator.n_jacobian_setups;
     return r;
   };
 
-  const Run reference = stepping("reference", Dynamics::Scheme::newmark, 1e-4);
+  const Run reference = stepping("reference", Dynamics::Scheme::newmark, 1e-3);
   const double estimate =
     Dynamics::stable_time_step_estimate(sim.discretization(),
                                         sim.get_scene().body_data());
   std::vector<Run> runs;
-  for (const double dt : {8e-3, 4e-3, 2e-3, 1e-3})
+  for (const double dt : {2e-2, 1e-2, 5e-3, 2.5e-3})
     runs.push_back(stepping("Newmark", Dynamics::Scheme::newmark, dt));
-  for (const double dt : {8e-3, 4e-3, 2e-3, 1e-3})
+  for (const double dt : {2e-2, 1e-2, 5e-3, 2.5e-3})
     runs.push_back(
       stepping("implicit Euler", Dynamics::Scheme::implicit_euler, dt));
   for (const double f : {0.9, 0.45})
     runs.push_back(stepping("central difference",
                             Dynamics::Scheme::central_difference,
                             f * estimate));
-  for (const double tolerance : {1e-3, 1e-4, 1e-5, 1e-6})
+  for (const double tolerance : {1e-3, 1e-4, 1e-5})
     runs.push_back(ida(tolerance));
 
-  std::cout << "Falling block (48 tetrahedra, P1, 81 unknowns), t = 0..0.3 "
-               "through the impact, 1 thread\n"
-               "error: max over t = 0.1, 0.2, 0.3 of |mean height - "
-               "Newmark(1e-4)| / drop height 0.1\n\n"
+  std::cout << "Falling rods, 2 x 2 array ("
+            << sim.get_scene().triangulation.n_active_cells()
+            << " tetrahedra, P1, " << n << " unknowns), t = 0.." << end_time
+            << ": rods on the bar at 0.15, rod on rod at 0.25; "
+            << MultithreadInfo::n_threads()
+            << " thread(s)\n"
+               "error: max over rods and t = 0.1, 0.2, 0.3, 0.4 of |tip "
+               "deflection - Newmark(1e-3)| / rod radius\n\n"
             << std::left << std::setw(27) << "integrator" << std::setw(11)
             << "step" << std::setw(8) << "steps" << std::setw(13) << "ms / step"
             << std::setw(16) << "s / sim. second"
@@ -143,16 +169,20 @@ main(int argc, char **argv)
   csv << "key,step,steps,seconds,seconds_per_simulated_second,error\n";
   for (const auto &r : runs)
     {
-      double error =
-        r.heights.size() < 3 ? std::numeric_limits<double>::infinity() : 0.;
-      for (unsigned int k = 0; k < r.heights.size() && k < 3; ++k)
-        error =
-          std::max(error, std::abs(r.heights[k] - reference.heights[k]) / 0.1);
+      double error = r.tips.size() < reference.tips.size() ?
+                       std::numeric_limits<double>::infinity() :
+                       0.;
+      for (unsigned int k = 0; k < r.tips.size() && k < reference.tips.size();
+           ++k)
+        for (unsigned int j = 0; j < r.tips[k].size(); ++j)
+          error = std::max(error,
+                           std::abs(r.tips[k][j] - reference.tips[k][j]) /
+                             tips.radius);
       std::cout << std::setw(27) << r.name << std::setw(11)
                 << (r.dt > 0. ? std::to_string(r.dt).substr(0, 8) : "adaptive")
                 << std::setw(8) << r.steps << std::setw(13)
                 << std::setprecision(3) << 1e3 * r.seconds / r.steps
-                << std::setw(16) << r.seconds / 0.3 << error << "\n";
+                << std::setw(16) << r.seconds / end_time << error << "\n";
       const std::string key = r.name.substr(0, r.name.find(' ')) == "IDA" ?
                                 "IDA" :
                               r.name == "implicit Euler"     ? "Euler" :
@@ -160,7 +190,7 @@ main(int argc, char **argv)
                                                                "Newmark";
       if (std::isfinite(error))
         csv << key << ',' << r.dt << ',' << r.steps << ',' << r.seconds << ','
-            << r.seconds / 0.3 << ',' << error << "\n";
+            << r.seconds / end_time << ',' << error << "\n";
     }
   std::cout << "(IDA: 'steps' counts Jacobian setups; central difference at "
                "0.9 and 0.45 of the stable estimate "
@@ -169,21 +199,21 @@ main(int argc, char **argv)
   if (std::system("command -v gnuplot > /dev/null 2>&1") == 0)
     {
       std::ofstream gp("integrators.gp");
-      gp
-        << "set terminal pngcairo size 900,650 font ',11'\n"
-           "set output 'integrators.png'\n"
-           "set datafile separator ','\n"
-           "set logscale xy\n"
-           "set xlabel 'wall time per simulated second [s]'\n"
-           "set ylabel 'error of the mean height / drop height'\n"
-           "set title 'Falling block: the integrators trade cost for accuracy'\n"
-           "set key bottom left\n"
-           "keys = 'Newmark Euler explicit IDA'\n"
-           "titles = '\"Newmark\" \"implicit Euler\" \"central difference\" "
-           "\"IDA\"'\n"
-           "plot for [i=1:4] 'integrators.csv' using (strcol(1) eq "
-           "word(keys, i) ? $5 : 1/0):6 with linespoints lw 2 title "
-           "word(titles, i) noenhanced\n";
+      gp << "set terminal pngcairo size 900,650 font ',11'\n"
+            "set output 'integrators.png'\n"
+            "set datafile separator ','\n"
+            "set logscale xy\n"
+            "set xlabel 'wall time per simulated second [s]'\n"
+            "set ylabel 'error of the tip deflections / rod radius'\n"
+            "set title 'Falling rods: the integrators trade cost for "
+            "accuracy'\n"
+            "set key bottom left\n"
+            "keys = 'Newmark Euler explicit IDA'\n"
+            "titles = '\"Newmark\" \"implicit Euler\" \"central difference\" "
+            "\"IDA\"'\n"
+            "plot for [i=1:4] 'integrators.csv' using (strcol(1) eq "
+            "word(keys, i) ? $5 : 1/0):6 with linespoints lw 2 title "
+            "word(titles, i) noenhanced\n";
       gp.close();
       if (std::system("gnuplot integrators.gp") == 0)
         std::cout << "wrote integrators.csv and integrators.png\n";
