@@ -49,19 +49,11 @@ subsection Boundary conditions
 end
 )";
 
-  /** prm/stacked_blocks.prm with the test's copy of its mesh. */
+  /** prm/stacked_blocks.prm */
   std::string
   contact()
   {
-    std::ifstream in(std::string(SOURCE_DIR) + "/../../prm/stacked_blocks.prm");
-    std::ostringstream text;
-    text << in.rdbuf();
-    std::string       s    = text.str();
-    const std::string mesh = "../meshes/stacked_blocks.msh";
-    s.replace(s.find(mesh),
-              mesh.size(),
-              std::string(SOURCE_DIR) + "/../contact/stacked_blocks.msh");
-    return s;
+    return project_prm("stacked_blocks.prm");
   }
 
 
