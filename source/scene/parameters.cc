@@ -485,7 +485,13 @@ namespace TissueContact
                         Patterns::Double(0.),
                         "Damping C = alpha M + beta K_0 (K_0: the tangent at "
                         "the start).");
-      prm.declare_entry("Rayleigh beta", "0", Patterns::Double(0.), "");
+      prm.declare_entry("Rayleigh beta",
+                        "0",
+                        Patterns::Double(0.),
+                        "beta of C = alpha M + beta K_0. K_0 is the reference "
+                        "tangent: not objective, it over-damps slender bodies "
+                        "that have rotated (doc/theory/06-dynamics.md, sec. "
+                        "1); prefer alpha for large rotations.");
       prm.declare_entry("Mass",
                         "consistent",
                         Patterns::Selection("consistent|lumped"),
