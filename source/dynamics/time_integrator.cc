@@ -54,6 +54,11 @@ namespace TissueContact
               c_M = 1. / (p.beta * dt * dt);
               c_C = p.gamma / (p.beta * dt);
             }
+          else if (p.scheme == Scheme::quasistatic)
+            {
+              c_M = 0.;
+              c_C = 1. / dt;
+            }
           else
             {
               c_M = 1. / (dt * dt);
@@ -85,13 +90,17 @@ namespace TissueContact
             }
           else
             {
-              // v = (u - u_n) / dt, a = (v - v_n) / dt
+              // v = (u - u_n) / dt, a = (v - v_n) / dt (quasistatic: no
+              // inertia, a = 0)
               v = u;
               v -= s.u;
               v /= dt;
-              a = v;
-              a -= s.v;
-              a /= dt;
+              if (p.scheme != Scheme::quasistatic)
+                {
+                  a = v;
+                  a -= s.v;
+                  a /= dt;
+                }
             }
         }
 
@@ -225,10 +234,12 @@ namespace TissueContact
         return Scheme::newmark;
       if (name == "central difference")
         return Scheme::central_difference;
+      if (name == "quasistatic")
+        return Scheme::quasistatic;
       AssertThrow(false,
-                  ExcMessage(
-                    "unknown time integration scheme '" + name +
-                    "' (implicit Euler, Newmark, central difference)"));
+                  ExcMessage("unknown time integration scheme '" + name +
+                             "' (implicit Euler, Newmark, central difference, "
+                             "quasistatic)"));
       return Scheme::newmark;
     }
 
@@ -296,6 +307,8 @@ namespace TissueContact
     double
     TimeIntegrator::kinetic_energy(const State &s) const
     {
+      if (parameters.scheme == Scheme::quasistatic)
+        return 0.; // no inertia
       Vector<double> Mv(s.v.size());
       mass_vmult(Mv, s.v);
       return 0.5 * (s.v * Mv);
@@ -325,7 +338,9 @@ namespace TissueContact
       rhs *= -1.;
       s.a.reinit(n);
       const auto prescribed = problem.prescribed_values(load_factor(s.t));
-      if (M != nullptr)
+      if (parameters.scheme == Scheme::quasistatic)
+        ; // no inertia: a = 0
+      else if (M != nullptr)
         {
           SparseMatrix<double> A(problem.sparsity_pattern());
           add_entries(A, 1., *M);

@@ -450,14 +450,18 @@ namespace TissueContact
       prm.declare_entry("Scheme",
                         "Newmark",
                         Patterns::Selection(
-                          "Newmark|implicit Euler|central difference|IDA"),
+                          "Newmark|implicit Euler|central difference|IDA|"
+                          "quasistatic"),
                         "Newmark (beta, gamma below; average acceleration by "
                         "default: no numerical damping), implicit Euler "
                         "(dissipative), central difference (explicit, lumped "
                         "mass, stable below 2/omega_max), IDA (SUNDIALS' "
                         "variable-order BDF with error control; settings in "
                         "the subsection IDA, whose times are replaced by End "
-                        "time and Output interval).");
+                        "time and Output interval), quasistatic (no inertia: "
+                        "the damping C = alpha M + beta K_0 as a viscosity, "
+                        "C v + f_int(u) = f_ext(t) by backward Euler; "
+                        "without damping a sequence of static solves).");
       {
         // deal.II's IDA entries, bound to a dummy object; parse() reads
         // them back by name

@@ -65,7 +65,8 @@ namespace TissueContact
 
     static const char *names[] = {"implicit Euler",
                                   "Newmark",
-                                  "central difference"};
+                                  "central difference",
+                                  "quasistatic"};
     const std::string  scheme =
       ti.use_ida ? "IDA" : names[int(ti.integrator.scheme)];
     out << "TissueContact dynamic analysis\n"

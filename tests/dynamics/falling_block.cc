@@ -9,7 +9,9 @@
 //    gamma = 1/2 implies);
 //  - the energy balance: kinetic + elastic + contact + gravity potential +
 //    dissipated (integral of alpha v^T M v) against the initial energy;
-//  - the state at t = 3: at rest, the contact force equal to the weight.
+//  - the state at t = 3: at rest, the contact force equal to the weight;
+//  - the same block quasistatic (no inertia, the drag as a viscosity): it
+//    sinks at g / alpha, touches at t = h alpha / g, and rests on the plane.
 
 #include "../tests.h"
 #include "scenes.h"
@@ -112,4 +114,31 @@ main(int argc, char **argv)
           << error_bound(integrator.kinetic_energy(s) / (mass * g * h), -4)
           << ", contact force / weight " << std::setprecision(4)
           << contact_force(s) / (mass * g) << std::setprecision(6) << std::endl;
+
+  {
+    Dynamics::TimeIntegrator::Parameters q;
+    q.scheme         = Dynamics::Scheme::quasistatic;
+    q.rayleigh_alpha = alpha;
+    Dynamics::TimeIntegrator creeping(q, sim, &M, nullptr);
+    Dynamics::State          c;
+    c.u.reinit(n);
+    c.v.reinit(n);
+    creeping.initialize(c);
+    double touch = -1., next = 0.005, speed = 0.;
+    while (c.t < 1. - 1e-9)
+      {
+        const Dynamics::State before = c;
+        creeping.step(c, 0.005, next);
+        if (c.t < 0.03 + 1e-9)
+          speed = -momentum(c) / mass;
+        if (touch < 0. && contact_force(c) > 0.)
+          touch = before.t;
+      }
+    deallog << "quasistatic: sinks at " << std::setprecision(4) << speed
+            << " (g/alpha " << g / alpha << "), touches at t = " << touch
+            << " (h alpha/g " << h * alpha / g
+            << ", step 0.005), at t = 1 contact force / weight "
+            << contact_force(c) / (mass * g) << std::setprecision(6)
+            << std::endl;
+  }
 }

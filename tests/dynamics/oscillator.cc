@@ -9,7 +9,11 @@
 //  - implicit Euler at the same steps: the energy dissipated;
 //  - central difference (lumped mass) at dt = f * 2 / omega_max (omega_max
 //    by power iteration on M_L^-1 K) for f = 0.5, 0.9, 1.1, 1.5: stable
-//    below the estimate, blow-up detected and reported above it.
+//    below the estimate, blow-up detected and reported above it;
+//  - quasistatic (no inertia, viscosity alpha M): the mode relaxes as
+//    alpha M u' + K u = 0 says, u = exp(-t / tau) phi with tau =
+//    alpha / omega^2; backward Euler's factor per step is
+//    1 / (1 + dt / tau).
 
 #include "../tests.h"
 #include "scenes.h"
@@ -149,4 +153,27 @@ main(int argc, char **argv)
         deallog << "unstable, detected: "
                 << failure.substr(0, failure.find(" at t =")) << std::endl;
     }
+
+  {
+    Dynamics::TimeIntegrator::Parameters p;
+    p.scheme         = Dynamics::Scheme::quasistatic;
+    p.rayleigh_alpha = 1.;
+    Dynamics::TimeIntegrator integrator(p, sim, &M, &M_lumped);
+    Dynamics::State          s;
+    s.u = phi;
+    s.u *= amplitude;
+    s.v.reinit(n);
+    integrator.initialize(s);
+    const double tau = p.rayleigh_alpha / (omega * omega), dt = 0.1 * tau;
+    double       next = dt;
+    for (unsigned int k = 0; k < 20; ++k)
+      integrator.step(s, dt, next);
+    const double ratio = modal(s.u) / amplitude;
+    deallog << "quasistatic, viscosity alpha M (alpha = 1), 20 steps of tau/10 "
+               "(tau = alpha/omega^2): amplitude / (1 + dt/tau)^-20 - 1 "
+            << error_bound(std::abs(ratio * std::pow(1.1, 20) - 1.), -10)
+            << "; amplitude " << std::setprecision(4) << ratio
+            << " (exp(-2) = " << std::exp(-2.) << ")" << std::setprecision(6)
+            << std::endl;
+  }
 }

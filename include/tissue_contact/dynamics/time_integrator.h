@@ -20,6 +20,7 @@ namespace TissueContact
       implicit_euler,     ///< backward Euler in velocity form
       newmark,            ///< Newmark (default: average acceleration)
       central_difference, ///< explicit, lumped mass
+      quasistatic,        ///< no inertia: C v + R(u) = 0 by backward Euler
     };
 
     /** Displacement, velocity and acceleration at time t. */
