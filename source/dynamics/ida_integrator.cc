@@ -44,26 +44,16 @@ namespace TissueContact
         return v;
       };
 
-      // Rayleigh damping C = alpha M + beta K_0
-      SparsityPattern      K0_pattern;
-      SparseMatrix<double> K0;
-      Vector<double>       R(n), tmp(n);
-      if (parameters.rayleigh_beta != 0.)
-        {
-          K0_pattern.copy_from(problem.sparsity_pattern());
-          K0.reinit(K0_pattern);
-          problem.assemble(s.u, lambda(s.t), R, &K0);
-        }
+      // the damping C = alpha M + beta K_0 + D, as the other schemes have it
+      Vector<double> R(n), tmp(n);
+      TimeIntegrator damping(parameters, problem, &M, nullptr);
+      {
+        State start = s;
+        damping.initialize(start);
+      }
       const auto damping_vmult = [&](Vector<double>       &Cx,
                                      const Vector<double> &x) {
-        M.vmult(Cx, x);
-        Cx *= parameters.rayleigh_alpha;
-        if (parameters.rayleigh_beta != 0.)
-          {
-            Vector<double> t(x.size());
-            K0.vmult(t, x);
-            Cx.add(parameters.rayleigh_beta, t);
-          }
+        damping.damping_vmult(Cx, x);
       };
 
       SUNDIALS::IDA<Vector<double>>             ida(data);
@@ -122,14 +112,9 @@ namespace TissueContact
         if (!problem.assemble(u, lambda(t), R, &J))
           return 1;
         // K + alpha^2 M + alpha C
-        const double m = alpha * alpha + alpha * parameters.rayleigh_alpha;
         for (auto it = M.begin(); it != M.end(); ++it)
-          J.add(it->row(), it->column(), m * it->value());
-        if (parameters.rayleigh_beta != 0.)
-          for (auto it = K0.begin(); it != K0.end(); ++it)
-            J.add(it->row(),
-                  it->column(),
-                  alpha * parameters.rayleigh_beta * it->value());
+          J.add(it->row(), it->column(), alpha * alpha * it->value());
+        damping.add_damping(J, alpha);
         // prescribed rows: identity (the right-hand side is set per solve)
         fixed.clear();
         for (const auto &p : problem.prescribed_values(lambda(t)))

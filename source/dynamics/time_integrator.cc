@@ -131,26 +131,16 @@ namespace TissueContact
           kinematics(u, v, a);
           integrator.mass_vmult(tmp, a);
           R += tmp;
-          const auto &p = integrator.parameters;
-          if (p.rayleigh_alpha != 0. || p.rayleigh_beta != 0.)
-            {
-              integrator.mass_vmult(tmp, v);
-              R.add(p.rayleigh_alpha, tmp);
-              if (p.rayleigh_beta != 0.)
-                {
-                  K0.vmult(tmp, v);
-                  R.add(p.rayleigh_beta, tmp);
-                }
-            }
+          integrator.damping_vmult(tmp, v);
+          R += tmp;
           if (K != nullptr)
             {
-              const double m = c_M + c_C * p.rayleigh_alpha;
               if (M != nullptr)
-                add_entries(*K, m, *M);
+                add_entries(*K, c_M, *M);
               else
                 for (types::global_dof_index i = 0; i < u.size(); ++i)
-                  K->add(i, i, m * (*M_lumped)[i]);
-              add_entries(*K, c_C * p.rayleigh_beta, K0);
+                  K->add(i, i, c_M * (*M_lumped)[i]);
+              integrator.add_damping(*K, c_C);
             }
           return true;
         }
@@ -166,28 +156,19 @@ namespace TissueContact
           const double Pi = problem.energy(u, load_factor);
           if (!std::isfinite(Pi))
             return Pi;
-          const auto    &p = integrator.parameters;
           Vector<double> v, a, w(u.size()), tmp(u.size()), d(u);
           d -= s.u;
           // w(u_n) = M a(u_n) + C v(u_n)
           kinematics(s.u, v, a);
           integrator.mass_vmult(w, a);
-          integrator.mass_vmult(tmp, v);
-          w.add(p.rayleigh_alpha, tmp);
-          if (p.rayleigh_beta != 0.)
-            {
-              K0.vmult(tmp, v);
-              w.add(p.rayleigh_beta, tmp);
-            }
-          // J_w d
+          integrator.damping_vmult(tmp, v);
+          w += tmp;
+          // J_w d = c_M M d + c_C C d
           Vector<double> Jd(u.size());
           integrator.mass_vmult(Jd, d);
-          Jd *= c_M + c_C * p.rayleigh_alpha;
-          if (p.rayleigh_beta != 0.)
-            {
-              K0.vmult(tmp, d);
-              Jd.add(c_C * p.rayleigh_beta, tmp);
-            }
+          Jd *= c_M;
+          integrator.damping_vmult(tmp, d);
+          Jd.add(c_C, tmp);
           return Pi + w * d + 0.5 * (d * Jd);
         }
 
@@ -291,16 +272,37 @@ namespace TissueContact
                                   const Vector<double> &x) const
     {
       Cx.reinit(x.size());
-      if (parameters.rayleigh_alpha == 0. && parameters.rayleigh_beta == 0.)
-        return;
-      mass_vmult(Cx, x);
-      Cx *= parameters.rayleigh_alpha;
+      if (parameters.rayleigh_alpha != 0.)
+        {
+          mass_vmult(Cx, x);
+          Cx *= parameters.rayleigh_alpha;
+        }
       if (parameters.rayleigh_beta != 0.)
         {
           Vector<double> tmp(x.size());
           K0.vmult(tmp, x);
           Cx.add(parameters.rayleigh_beta, tmp);
         }
+      for (types::global_dof_index i = 0; i < D.size(); ++i)
+        Cx[i] += D[i] * x[i];
+    }
+
+
+    void
+    TimeIntegrator::add_damping(SparseMatrix<double> &K, const double c) const
+    {
+      if (parameters.rayleigh_alpha != 0.)
+        {
+          if (M != nullptr)
+            add_entries(K, c * parameters.rayleigh_alpha, *M);
+          else
+            for (types::global_dof_index i = 0; i < K.m(); ++i)
+              K.add(i, i, c * parameters.rayleigh_alpha * (*M_lumped)[i]);
+        }
+      if (parameters.rayleigh_beta != 0.)
+        add_entries(K, c * parameters.rayleigh_beta, K0);
+      for (types::global_dof_index i = 0; i < D.size(); ++i)
+        K.add(i, i, c * D[i]);
     }
 
 
@@ -330,6 +332,8 @@ namespace TissueContact
           K0.reinit(damping_pattern);
           K0.copy_from(K);
         }
+      if (parameters.nodal_viscosity > 0.)
+        D = problem.quasi_viscosity_diagonal(parameters.nodal_viscosity);
       // M a_0 = -R(u_0) - C v_0 on the free DoFs; prescribed: a_0 = 0
       Vector<double> rhs(n), Cv;
       damping_vmult(Cv, s.v);

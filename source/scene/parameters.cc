@@ -496,6 +496,15 @@ namespace TissueContact
                         "tangent: not objective, it over-damps slender bodies "
                         "that have rotated (doc/theory/06-dynamics.md, sec. "
                         "1); prefer alpha for large rotations.");
+      prm.declare_entry(
+        "Nodal viscosity",
+        "0",
+        Patterns::Double(0.),
+        "A time tau: the dissertation's nodal viscosity D_a = tau sum_e "
+        "mu_e h_e / n_e (the diagonal of the static solver's "
+        "quasi-viscosity, doc/theory/04 sec. 4.4) added to the damping C as "
+        "a physical damping; a node's viscous force D_a v equals the "
+        "elastic force of its elements at the displacement tau v.");
       prm.declare_entry("Mass",
                         "consistent",
                         Patterns::Selection("consistent|lumped"),
@@ -542,16 +551,17 @@ namespace TissueContact
       ida.reset_type = SUNDIALS::IDA<Vector<double>>::AdditionalData::none;
       time_step      = prm.get_double("Time step");
       end_time       = prm.get_double("End time");
-      integrator.minimum_step   = prm.get_double("Minimum time step");
-      integrator.growth_factor  = prm.get_double("Growth factor");
-      integrator.maximum_step   = time_step;
-      integrator.beta           = prm.get_double("Newmark beta");
-      integrator.gamma          = prm.get_double("Newmark gamma");
-      integrator.rayleigh_alpha = prm.get_double("Rayleigh alpha");
-      integrator.rayleigh_beta  = prm.get_double("Rayleigh beta");
-      integrator.ramp_time      = prm.get_double("Ramp time");
-      lumped_mass               = prm.get("Mass") == "lumped";
-      output_interval           = prm.get_double("Output interval");
+      integrator.minimum_step    = prm.get_double("Minimum time step");
+      integrator.growth_factor   = prm.get_double("Growth factor");
+      integrator.maximum_step    = time_step;
+      integrator.beta            = prm.get_double("Newmark beta");
+      integrator.gamma           = prm.get_double("Newmark gamma");
+      integrator.rayleigh_alpha  = prm.get_double("Rayleigh alpha");
+      integrator.rayleigh_beta   = prm.get_double("Rayleigh beta");
+      integrator.nodal_viscosity = prm.get_double("Nodal viscosity");
+      integrator.ramp_time       = prm.get_double("Ramp time");
+      lumped_mass                = prm.get("Mass") == "lumped";
+      output_interval            = prm.get_double("Output interval");
       prm.leave_subsection();
       ida.initial_time  = 0.;
       ida.final_time    = end_time;

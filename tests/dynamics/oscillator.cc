@@ -13,7 +13,11 @@
 //  - quasistatic (no inertia, viscosity alpha M): the mode relaxes as
 //    alpha M u' + K u = 0 says, u = exp(-t / tau) phi with tau =
 //    alpha / omega^2; backward Euler's factor per step is
-//    1 / (1 + dt / tau).
+//    1 / (1 + dt / tau);
+//  - the dissertation's nodal viscosity D (a diagonal) as the damping of
+//    Newmark: the energy after 5 periods against exp(-2 zeta omega t) with
+//    the modal damping ratio zeta = phi^T D phi / (2 omega phi^T M phi)
+//    (light damping; D couples the modes a little).
 
 #include "../tests.h"
 #include "scenes.h"
@@ -175,5 +179,34 @@ main(int argc, char **argv)
             << "; amplitude " << std::setprecision(4) << ratio
             << " (exp(-2) = " << std::exp(-2.) << ")" << std::setprecision(6)
             << std::endl;
+  }
+
+  {
+    // tau of D_a = tau sum_e mu_e h_e / n_e such that zeta = 0.01
+    const Vector<double> D1         = sim.quasi_viscosity_diagonal(1.);
+    double               phi_D1_phi = 0.;
+    for (types::global_dof_index i = 0; i < n; ++i)
+      phi_D1_phi += D1[i] * phi[i] * phi[i];
+    const double                         zeta = 0.01;
+    Dynamics::TimeIntegrator::Parameters p;
+    p.nodal_viscosity = 2. * zeta * omega * bar.phi_M_phi / phi_D1_phi;
+    Dynamics::TimeIntegrator integrator(p, sim, &M, &M_lumped);
+    Dynamics::State          s;
+    s.u = phi;
+    s.u *= amplitude;
+    s.v.reinit(n);
+    integrator.initialize(s);
+    const auto energy = [&](const Dynamics::State &st) {
+      return integrator.kinetic_energy(st) + sim.energy(st.u, 1.);
+    };
+    const double E0 = energy(s), dt = T / 40.;
+    double       next = dt;
+    while (s.t < 5. * T - 1e-9)
+      integrator.step(s, dt, next);
+    deallog << "Newmark with the nodal viscosity (zeta = 0.01 in the lowest "
+               "mode), T/40, 5 periods: energy / initial "
+            << std::setprecision(4) << energy(s) / E0
+            << " (exp(-2 zeta omega t) = " << std::exp(-2. * zeta * omega * s.t)
+            << ")" << std::setprecision(6) << std::endl;
   }
 }

@@ -49,6 +49,11 @@ namespace TissueContact
         double beta           = 0.25; ///< Newmark beta
         double gamma          = 0.5;  ///< Newmark gamma
         double rayleigh_alpha = 0., rayleigh_beta = 0.;
+        /** A time tau: the dissertation's nodal viscosity D_a = tau
+         * sum_e mu_e h_e / n_e (the static solver's quasi-viscosity
+         * diagonal, doc/theory/04 sec. 4.4) as a physical damping:
+         * C = alpha M + beta K_0 + D. */
+        double nodal_viscosity = 0.;
         /** Loads and prescribed motions grow linearly from 0 to their full
          * value over this time (0: applied at once). */
         double ramp_time = 0.;
@@ -96,10 +101,14 @@ namespace TissueContact
       void
       mass_vmult(Vector<double> &Mx, const Vector<double> &x) const;
 
-      /** The Rayleigh damping applied to a vector: @p Cx = (alpha M +
-       * beta K_0) x; the power it dissipates at velocity v is v^T C v. */
+      /** The damping applied to a vector: @p Cx = (alpha M + beta K_0 + D)
+       * x; the power it dissipates at velocity v is v^T C v. */
       void
       damping_vmult(Vector<double> &Cx, const Vector<double> &x) const;
+
+      /** Add c (alpha M + beta K_0 + D) to @p K (pattern of the problem). */
+      void
+      add_damping(SparseMatrix<double> &K, const double c) const;
 
       /** The load factor at time @p t (Parameters::ramp_time). */
       double
@@ -117,6 +126,8 @@ namespace TissueContact
       /** beta K_0 for the Rayleigh damping, with its own pattern. */
       SparsityPattern      damping_pattern;
       SparseMatrix<double> K0;
+      /** The nodal viscosity's diagonal D (empty without it). */
+      Vector<double> D;
       /** One Newton solver for all steps: its matrix is allocated once
        * (it is rebuilt only when the problem's sparsity pattern changes). */
       Solvers::IncrementalNewtonSolver newton;
