@@ -104,11 +104,17 @@ main(int argc, char **argv)
   };
   const auto ida = [&](const double tolerance) {
     SUNDIALS::IDA<Vector<double>>::AdditionalData data;
-    data.final_time         = end_time;
-    data.initial_step_size  = 1e-4;
-    data.output_period      = sample;
+    data.final_time        = end_time;
+    data.initial_step_size = 1e-4;
+    // outputs every 0.01 (IDA allows 500 steps per output interval; the
+    // impacts need more in 0.1), sampled every 0.1
+    data.output_period      = 0.01;
     data.relative_tolerance = tolerance;
-    data.absolute_tolerance = 1e-3 * tolerance;
+    // the rods' displacements are ~0.1 and velocities ~1: an absolute
+    // tolerance below 1e-3 makes IDA resolve the high-frequency response
+    // to the suddenly applied gravity, at steps of ~1e-4 (doc/theory/06,
+    // sec. 8)
+    data.absolute_tolerance = 1e-3;
     data.ic_type    = SUNDIALS::IDA<Vector<double>>::AdditionalData::none;
     data.reset_type = SUNDIALS::IDA<Vector<double>>::AdditionalData::none;
     std::ostringstream name;
@@ -122,7 +128,8 @@ main(int argc, char **argv)
     try
       {
         integrator.integrate(s, [&](const Dynamics::State &o) {
-          if (o.t > 1e-12)
+          const double k = std::round(o.t / sample);
+          if (k > 0.5 && std::abs(o.t - k * sample) < 1e-9)
             r.tips.push_back(deflections(o.u));
         });
       }
@@ -150,7 +157,7 @@ main(int argc, char **argv)
     runs.push_back(stepping("central difference",
                             Dynamics::Scheme::central_difference,
                             f * estimate));
-  for (const double tolerance : {1e-3, 1e-4, 1e-5})
+  for (const double tolerance : {1e-3, 1e-4})
     runs.push_back(ida(tolerance));
 
   std::cout << "Falling rods, 2 x 2 array ("
