@@ -12,7 +12,9 @@ namespace TissueContact
   {
     namespace
     {
-      /** K += c A, entry by entry (K's pattern contains A's). */
+      /** K += c A, entry by entry. A's pattern may hold contact couplings
+       * K's (rebuilt for the current contact) no longer has: those are
+       * left out of the tangent. */
       void
       add_entries(SparseMatrix<double>       &K,
                   const double                c,
@@ -20,8 +22,13 @@ namespace TissueContact
       {
         if (c == 0.)
           return;
+        const bool same =
+          &K.get_sparsity_pattern() == &A.get_sparsity_pattern();
         for (auto it = A.begin(); it != A.end(); ++it)
-          K.add(it->row(), it->column(), c * it->value());
+          if (it->value() != 0. &&
+              (same ||
+               K.get_sparsity_pattern().exists(it->row(), it->column())))
+            K.add(it->row(), it->column(), c * it->value());
       }
 
       /**
@@ -37,14 +44,12 @@ namespace TissueContact
                          Solvers::NonlinearProblem  &problem,
                          const SparseMatrix<double> *M,
                          const Vector<double>       *M_lumped,
-                         const SparseMatrix<double> &K0,
                          const State                &s,
                          const double                dt)
           : integrator(integrator)
           , problem(problem)
           , M(M)
           , M_lumped(M_lumped)
-          , K0(K0)
           , s(s)
           , dt(dt)
         {
@@ -198,7 +203,6 @@ namespace TissueContact
         Solvers::NonlinearProblem  &problem;
         const SparseMatrix<double> *M;
         const Vector<double>       *M_lumped;
-        const SparseMatrix<double> &K0;
         const State                &s;
         const double                dt;
         double                      c_M = 0., c_C = 0.;
@@ -328,6 +332,7 @@ namespace TissueContact
                              "the initial state"));
       if (parameters.rayleigh_beta != 0.)
         {
+          K0.clear();
           damping_pattern.copy_from(problem.sparsity_pattern());
           K0.reinit(damping_pattern);
           K0.copy_from(K);
@@ -364,10 +369,26 @@ namespace TissueContact
     }
 
 
+    void
+    TimeIntegrator::assemble_damping_stiffness(const Vector<double> &u,
+                                               const double          t)
+    {
+      problem.update_sparsity_pattern(u);
+      K0.clear();
+      damping_pattern.copy_from(problem.sparsity_pattern());
+      K0.reinit(damping_pattern);
+      Vector<double> R(u.size());
+      AssertThrow(problem.assemble(u, load_factor(t), R, &K0),
+                  ExcMessage("time integration: an element is inverted at "
+                             "t = " +
+                             std::to_string(t)));
+    }
+
+
     double
     TimeIntegrator::implicit_step(State &s, const double dt)
     {
-      EffectiveProblem effective(*this, problem, M, M_lumped, K0, s, dt);
+      EffectiveProblem effective(*this, problem, M, M_lumped, s, dt);
       // predictor: constant velocity (the constant-acceleration one
       // carries the high-frequency content of a_n that Newmark does not
       // damp: initial residuals 50 times larger on prm/sagging_bars.prm)
@@ -451,6 +472,8 @@ namespace TissueContact
           next_dt = dt;
           return dt;
         }
+      if (parameters.rayleigh_beta != 0. && parameters.rayleigh_beta_current)
+        assemble_damping_stiffness(s.u, s.t);
       double      h = dt;
       std::string reason;
       while (h >= parameters.minimum_step)

@@ -492,10 +492,18 @@ namespace TissueContact
       prm.declare_entry("Rayleigh beta",
                         "0",
                         Patterns::Double(0.),
-                        "beta of C = alpha M + beta K_0. K_0 is the reference "
-                        "tangent: not objective, it over-damps slender bodies "
-                        "that have rotated (doc/theory/06-dynamics.md, sec. "
-                        "1); prefer alpha for large rotations.");
+                        "beta of C = alpha M + beta K (K: see Rayleigh "
+                        "tangent).");
+      prm.declare_entry(
+        "Rayleigh tangent",
+        "initial",
+        Patterns::Selection("initial|step start"),
+        "The K of beta K. initial: K_0, the tangent at the initial state "
+        "(constant, but not objective: it over-damps slender bodies that "
+        "have rotated, doc/theory/06-dynamics.md sec. 1); step start: the "
+        "tangent at the start of every implicit step, which follows the "
+        "rotation (one more assembly per step; the explicit scheme and IDA "
+        "keep K_0).");
       prm.declare_entry(
         "Nodal viscosity",
         "0",
@@ -551,13 +559,15 @@ namespace TissueContact
       ida.reset_type = SUNDIALS::IDA<Vector<double>>::AdditionalData::none;
       time_step      = prm.get_double("Time step");
       end_time       = prm.get_double("End time");
-      integrator.minimum_step    = prm.get_double("Minimum time step");
-      integrator.growth_factor   = prm.get_double("Growth factor");
-      integrator.maximum_step    = time_step;
-      integrator.beta            = prm.get_double("Newmark beta");
-      integrator.gamma           = prm.get_double("Newmark gamma");
-      integrator.rayleigh_alpha  = prm.get_double("Rayleigh alpha");
-      integrator.rayleigh_beta   = prm.get_double("Rayleigh beta");
+      integrator.minimum_step   = prm.get_double("Minimum time step");
+      integrator.growth_factor  = prm.get_double("Growth factor");
+      integrator.maximum_step   = time_step;
+      integrator.beta           = prm.get_double("Newmark beta");
+      integrator.gamma          = prm.get_double("Newmark gamma");
+      integrator.rayleigh_alpha = prm.get_double("Rayleigh alpha");
+      integrator.rayleigh_beta  = prm.get_double("Rayleigh beta");
+      integrator.rayleigh_beta_current =
+        prm.get("Rayleigh tangent") == "step start";
       integrator.nodal_viscosity = prm.get_double("Nodal viscosity");
       integrator.ramp_time       = prm.get_double("Ramp time");
       lumped_mass                = prm.get("Mass") == "lumped";

@@ -49,6 +49,11 @@ namespace TissueContact
         double beta           = 0.25; ///< Newmark beta
         double gamma          = 0.5;  ///< Newmark gamma
         double rayleigh_alpha = 0., rayleigh_beta = 0.;
+        /** The K of beta K: false, K_0, the tangent at the initial state;
+         * true, the tangent at the start of each implicit step, K(u_n),
+         * which follows the bodies' rotation (the explicit scheme and IDA
+         * keep K_0). */
+        bool rayleigh_beta_current = false;
         /** A time tau: the dissertation's nodal viscosity D_a = tau
          * sum_e mu_e h_e / n_e (the static solver's quasi-viscosity
          * diagonal, doc/theory/04 sec. 4.4) as a physical damping:
@@ -123,7 +128,7 @@ namespace TissueContact
       Solvers::NonlinearProblem  &problem;
       const SparseMatrix<double> *M;
       const Vector<double>       *M_lumped;
-      /** beta K_0 for the Rayleigh damping, with its own pattern. */
+      /** K_0 (or K(u_n)) for the Rayleigh damping, with its own pattern. */
       SparsityPattern      damping_pattern;
       SparseMatrix<double> K0;
       /** The nodal viscosity's diagonal D (empty without it). */
@@ -133,6 +138,10 @@ namespace TissueContact
       Solvers::IncrementalNewtonSolver newton;
       double                           reference_energy    = 0.;
       bool                             first_explicit_step = true;
+
+      /** K of the Rayleigh damping := the tangent at @p u, time @p t. */
+      void
+      assemble_damping_stiffness(const Vector<double> &u, const double t);
 
       double
       implicit_step(State &s, const double dt);
