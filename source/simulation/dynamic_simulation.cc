@@ -157,13 +157,14 @@ namespace TissueContact
             if (contact != nullptr)
               for (const double W : contact->energies(s.u))
                 csv << ',' << W;
-            csv << '\n';
+            csv << std::endl; // readable while the run goes on
             if (on_step)
               on_step(integrator, before, s);
             out << std::setw(6) << step << std::scientific
                 << std::setprecision(4) << std::setw(13) << s.t << std::setw(13)
                 << taken << std::setw(6) << integrator.last_iterations << "  "
-                << kinetic << std::defaultfloat << std::setprecision(6) << "\n";
+                << kinetic << std::defaultfloat << std::setprecision(6)
+                << std::endl;
             if (p.output.write_vtu && (s.t >= next_output * (1. - 1e-12) ||
                                        s.t >= ti.end_time * (1. - 1e-12)))
               {
@@ -222,7 +223,7 @@ namespace TissueContact
           Vector<double> Mv(o.v.size());
           M.vmult(Mv, o.v);
           const double kinetic = 0.5 * (o.v * Mv);
-          csv << outputs << ',' << o.t << ',' << kinetic << '\n';
+          csv << outputs << ',' << o.t << ',' << kinetic << std::endl;
           out << std::setw(8) << outputs << std::scientific
               << std::setprecision(4) << std::setw(13) << o.t << "  " << kinetic
               << std::defaultfloat << std::setprecision(6) << "\n";
