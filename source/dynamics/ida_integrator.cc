@@ -46,14 +46,16 @@ namespace TissueContact
 
       // the damping C = alpha M + beta K_0 + D, as the other schemes have it
       Vector<double> R(n), tmp(n);
-      TimeIntegrator damping(parameters, problem, &M, nullptr);
-      {
-        State start = s;
-        damping.initialize(start);
-      }
+      Damping        damping(parameters.rayleigh_alpha,
+                      parameters.rayleigh_beta,
+                      parameters.nodal_viscosity,
+                      problem,
+                      &M,
+                      nullptr);
+      damping.set_state(s.u, lambda(s.t));
       const auto damping_vmult = [&](Vector<double>       &Cx,
                                      const Vector<double> &x) {
-        damping.damping_vmult(Cx, x);
+        damping.vmult(Cx, x);
       };
 
       SUNDIALS::IDA<Vector<double>>             ida(data);
@@ -114,7 +116,7 @@ namespace TissueContact
         // K + alpha^2 M + alpha C
         for (auto it = M.begin(); it != M.end(); ++it)
           J.add(it->row(), it->column(), alpha * alpha * it->value());
-        damping.add_damping(J, alpha);
+        damping.add_to(J, alpha);
         // prescribed rows: identity (the right-hand side is set per solve)
         fixed.clear();
         for (const auto &p : problem.prescribed_values(lambda(t)))

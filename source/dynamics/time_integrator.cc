@@ -12,25 +12,6 @@ namespace TissueContact
   {
     namespace
     {
-      /** K += c A, entry by entry. A's pattern may hold contact couplings
-       * K's (rebuilt for the current contact) no longer has: those are
-       * left out of the tangent. */
-      void
-      add_entries(SparseMatrix<double>       &K,
-                  const double                c,
-                  const SparseMatrix<double> &A)
-      {
-        if (c == 0.)
-          return;
-        const bool same =
-          &K.get_sparsity_pattern() == &A.get_sparsity_pattern();
-        for (auto it = A.begin(); it != A.end(); ++it)
-          if (it->value() != 0. &&
-              (same ||
-               K.get_sparsity_pattern().exists(it->row(), it->column())))
-            K.add(it->row(), it->column(), c * it->value());
-      }
-
       /**
        * The residual of one implicit step as a NonlinearProblem in the
        * end-of-step displacement u: @f$G(u) = M a(u) + C v(u) + R(u)@f$
@@ -136,16 +117,16 @@ namespace TissueContact
           kinematics(u, v, a);
           integrator.mass_vmult(tmp, a);
           R += tmp;
-          integrator.damping_vmult(tmp, v);
+          integrator.damping().vmult(tmp, v);
           R += tmp;
           if (K != nullptr)
             {
               if (M != nullptr)
-                add_entries(*K, c_M, *M);
+                add_scaled(*K, c_M, *M);
               else
                 for (types::global_dof_index i = 0; i < u.size(); ++i)
                   K->add(i, i, c_M * (*M_lumped)[i]);
-              integrator.add_damping(*K, c_C);
+              integrator.damping().add_to(*K, c_C);
             }
           return true;
         }
@@ -166,13 +147,13 @@ namespace TissueContact
           // w(u_n) = M a(u_n) + C v(u_n)
           kinematics(s.u, v, a);
           integrator.mass_vmult(w, a);
-          integrator.damping_vmult(tmp, v);
+          integrator.damping().vmult(tmp, v);
           w += tmp;
           // J_w d = c_M M d + c_C C d
           Vector<double> Jd(u.size());
           integrator.mass_vmult(Jd, d);
           Jd *= c_M;
-          integrator.damping_vmult(tmp, d);
+          integrator.damping().vmult(tmp, d);
           Jd.add(c_C, tmp);
           return Pi + w * d + 0.5 * (d * Jd);
         }
@@ -237,6 +218,14 @@ namespace TissueContact
       , problem(problem)
       , M(mass_consistent)
       , M_lumped(mass_lumped)
+      , damping_operator(parameters.rayleigh_alpha,
+                         parameters.rayleigh_beta,
+                         parameters.nodal_viscosity,
+                         problem,
+                         parameters.scheme == Scheme::central_difference ?
+                           nullptr :
+                           mass_consistent,
+                         mass_lumped)
       , newton(parameters.newton)
     {
       AssertThrow(M != nullptr || M_lumped != nullptr,
@@ -271,45 +260,6 @@ namespace TissueContact
     }
 
 
-    void
-    TimeIntegrator::damping_vmult(Vector<double>       &Cx,
-                                  const Vector<double> &x) const
-    {
-      Cx.reinit(x.size());
-      if (parameters.rayleigh_alpha != 0.)
-        {
-          mass_vmult(Cx, x);
-          Cx *= parameters.rayleigh_alpha;
-        }
-      if (parameters.rayleigh_beta != 0.)
-        {
-          Vector<double> tmp(x.size());
-          K0.vmult(tmp, x);
-          Cx.add(parameters.rayleigh_beta, tmp);
-        }
-      for (types::global_dof_index i = 0; i < D.size(); ++i)
-        Cx[i] += D[i] * x[i];
-    }
-
-
-    void
-    TimeIntegrator::add_damping(SparseMatrix<double> &K, const double c) const
-    {
-      if (parameters.rayleigh_alpha != 0.)
-        {
-          if (M != nullptr)
-            add_entries(K, c * parameters.rayleigh_alpha, *M);
-          else
-            for (types::global_dof_index i = 0; i < K.m(); ++i)
-              K.add(i, i, c * parameters.rayleigh_alpha * (*M_lumped)[i]);
-        }
-      if (parameters.rayleigh_beta != 0.)
-        add_entries(K, c * parameters.rayleigh_beta, K0);
-      for (types::global_dof_index i = 0; i < D.size(); ++i)
-        K.add(i, i, c * D[i]);
-    }
-
-
     double
     TimeIntegrator::kinetic_energy(const State &s) const
     {
@@ -324,24 +274,15 @@ namespace TissueContact
     void
     TimeIntegrator::initialize(State &s)
     {
-      const auto           n = problem.n_dofs();
-      Vector<double>       R(n);
-      SparseMatrix<double> K(problem.sparsity_pattern());
-      AssertThrow(problem.assemble(s.u, load_factor(s.t), R, &K),
+      const auto     n = problem.n_dofs();
+      Vector<double> R(n);
+      AssertThrow(problem.assemble(s.u, load_factor(s.t), R, nullptr),
                   ExcMessage("time integration: an element is inverted in "
                              "the initial state"));
-      if (parameters.rayleigh_beta != 0.)
-        {
-          K0.clear();
-          damping_pattern.copy_from(problem.sparsity_pattern());
-          K0.reinit(damping_pattern);
-          K0.copy_from(K);
-        }
-      if (parameters.nodal_viscosity > 0.)
-        D = problem.quasi_viscosity_diagonal(parameters.nodal_viscosity);
+      damping_operator.set_state(s.u, load_factor(s.t));
       // M a_0 = -R(u_0) - C v_0 on the free DoFs; prescribed: a_0 = 0
       Vector<double> rhs(n), Cv;
-      damping_vmult(Cv, s.v);
+      damping_operator.vmult(Cv, s.v);
       rhs = R;
       rhs += Cv;
       rhs *= -1.;
@@ -352,7 +293,7 @@ namespace TissueContact
       else if (M != nullptr)
         {
           SparseMatrix<double> A(problem.sparsity_pattern());
-          add_entries(A, 1., *M);
+          add_scaled(A, 1., *M);
           std::map<types::global_dof_index, double> zero;
           for (const auto &t : prescribed)
             zero[t.first] = 0.;
@@ -366,22 +307,6 @@ namespace TissueContact
             s.a[i] = rhs[i] / (*M_lumped)[i];
       reference_energy = kinetic_energy(s) + 0.5 * std::abs(s.u * R) +
                          std::numeric_limits<double>::min();
-    }
-
-
-    void
-    TimeIntegrator::assemble_damping_stiffness(const Vector<double> &u,
-                                               const double          t)
-    {
-      problem.update_sparsity_pattern(u);
-      K0.clear();
-      damping_pattern.copy_from(problem.sparsity_pattern());
-      K0.reinit(damping_pattern);
-      Vector<double> R(u.size());
-      AssertThrow(problem.assemble(u, load_factor(t), R, &K0),
-                  ExcMessage("time integration: an element is inverted at "
-                             "t = " +
-                             std::to_string(t)));
     }
 
 
@@ -431,7 +356,7 @@ namespace TissueContact
         s.u[t.first] = t.second;
       Vector<double> R(n), Cv;
       const bool     valid = problem.assemble(s.u, lambda, R, nullptr);
-      damping_vmult(Cv, v_half);
+      damping_operator.vmult(Cv, v_half);
       s.a = 0.;
       for (types::global_dof_index i = 0; i < n; ++i)
         if ((*M_lumped)[i] > 0. && prescribed.count(i) == 0)
@@ -473,7 +398,7 @@ namespace TissueContact
           return dt;
         }
       if (parameters.rayleigh_beta != 0. && parameters.rayleigh_beta_current)
-        assemble_damping_stiffness(s.u, s.t);
+        damping_operator.set_state(s.u, load_factor(s.t));
       double      h = dt;
       std::string reason;
       while (h >= parameters.minimum_step)

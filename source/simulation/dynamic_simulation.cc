@@ -108,7 +108,6 @@ namespace TissueContact
 
     // one column per contact interaction: pairs as contact_<surface body>_
     // <volume body>, obstacles as obstacle_<index>
-    const auto *contact = problem.contact_assembler();
     std::string columns =
       "step,time,time_step,newton_iterations,kinetic_energy,energy,"
       "dissipated";
@@ -141,22 +140,24 @@ namespace TissueContact
             iterations += integrator.last_iterations;
             dt = std::max(next, taken);
             ++step;
-            const double kinetic = integrator.kinetic_energy(s);
-            const double energy =
-              kinetic + problem.energy(s.u, integrator.load_factor(s.t));
+            const double        kinetic = integrator.kinetic_energy(s);
+            std::vector<double> contact_energies;
+            const double        energy =
+              kinetic + problem.energy(s.u,
+                                       integrator.load_factor(s.t),
+                                       contact_energies);
             // the damping's work over the step at the mid-step velocity
             // (exact for the average-acceleration Newmark scheme)
             v_mid = before.v;
             v_mid += s.v;
             v_mid *= 0.5;
-            integrator.damping_vmult(Cv, v_mid);
+            integrator.damping().vmult(Cv, v_mid);
             dissipated += taken * (v_mid * Cv);
             csv << step << ',' << s.t << ',' << taken << ','
                 << integrator.last_iterations << ',' << kinetic << ',' << energy
                 << ',' << dissipated;
-            if (contact != nullptr)
-              for (const double W : contact->energies(s.u))
-                csv << ',' << W;
+            for (const double W : contact_energies)
+              csv << ',' << W;
             csv << std::endl; // readable while the run goes on
             if (on_step)
               on_step(integrator, before, s);

@@ -2,6 +2,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <filesystem>
+#include <numeric>
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/output/convergence_log.h>
 #include <tissue_contact/output/vtu_writer.h>
@@ -85,6 +86,18 @@ namespace TissueContact
   {
     const double W = assembler.energy(u, load_factor);
     return contact ? W + contact->energy(u) : W;
+  }
+
+
+  double
+  StaticSimulation::energy(const Vector<double> &u,
+                           const double          load_factor,
+                           std::vector<double>  &contact_energies) const
+  {
+    contact_energies = contact ? contact->energies(u) : std::vector<double>();
+    return std::accumulate(contact_energies.begin(),
+                           contact_energies.end(),
+                           assembler.energy(u, load_factor));
   }
 
 

@@ -5,6 +5,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <tissue_contact/dynamics/damping.h>
 #include <tissue_contact/solvers/newton_solver.h>
 #include <tissue_contact/solvers/nonlinear_problem.h>
 
@@ -106,14 +107,13 @@ namespace TissueContact
       void
       mass_vmult(Vector<double> &Mx, const Vector<double> &x) const;
 
-      /** The damping applied to a vector: @p Cx = (alpha M + beta K_0 + D)
-       * x; the power it dissipates at velocity v is v^T C v. */
-      void
-      damping_vmult(Vector<double> &Cx, const Vector<double> &x) const;
-
-      /** Add c (alpha M + beta K_0 + D) to @p K (pattern of the problem). */
-      void
-      add_damping(SparseMatrix<double> &K, const double c) const;
+      /** The damping C = alpha M + beta K + D (set up by initialize());
+       * the power it dissipates at velocity v is v^T C v. */
+      const Damping &
+      damping() const
+      {
+        return damping_operator;
+      }
 
       /** The load factor at time @p t (Parameters::ramp_time). */
       double
@@ -128,20 +128,12 @@ namespace TissueContact
       Solvers::NonlinearProblem  &problem;
       const SparseMatrix<double> *M;
       const Vector<double>       *M_lumped;
-      /** K_0 (or K(u_n)) for the Rayleigh damping, with its own pattern. */
-      SparsityPattern      damping_pattern;
-      SparseMatrix<double> K0;
-      /** The nodal viscosity's diagonal D (empty without it). */
-      Vector<double> D;
+      Damping                     damping_operator;
       /** One Newton solver for all steps: its matrix is allocated once
        * (it is rebuilt only when the problem's sparsity pattern changes). */
       Solvers::IncrementalNewtonSolver newton;
       double                           reference_energy    = 0.;
       bool                             first_explicit_step = true;
-
-      /** K of the Rayleigh damping := the tangent at @p u, time @p t. */
-      void
-      assemble_damping_stiffness(const Vector<double> &u, const double t);
 
       double
       implicit_step(State &s, const double dt);

@@ -98,6 +98,14 @@ namespace TissueContact
     double
     energy(const Vector<double> &u, const double load_factor) const override;
 
+    /** The same, and the contact energy per interaction in
+     * @p contact_energies (ContactAssembler::energies(); empty without
+     * contact). */
+    double
+    energy(const Vector<double> &u,
+           const double          load_factor,
+           std::vector<double>  &contact_energies) const;
+
   private:
     /** sparsity = the FE pattern + the contact couplings at @p u (with a
      * margin of half the smallest cell diameter, so that nearby pairs do
