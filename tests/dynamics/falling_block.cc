@@ -32,17 +32,13 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
-  std::ostringstream   log;
-  StaticSimulation     sim(Scene::SceneParameters::from_string(
-                         DynamicsTestScenes::falling_block),
-                       log);
-  const auto          &disc      = sim.discretization();
-  const auto           n         = disc.n_dofs();
-  const auto           component = disc.dof_components();
-  SparseMatrix<double> M(disc.sparsity_pattern);
-  Dynamics::assemble_consistent_mass(disc, sim.get_scene().body_data(), M);
+  DynamicsTestScenes::FallingBlock block;
+  auto                            &sim = block.sim;
+  const auto                       n   = block.n;
+  const auto                      &M   = block.M;
+  const auto                      &ez  = block.ez;
 
-  const double g = 10., alpha = 5., mass = 0.008, h = 0.1;
+  const double g = 10., alpha = 5., mass = block.mass, h = 0.1;
   Dynamics::TimeIntegrator::Parameters p;
   p.scheme         = Dynamics::Scheme::newmark;
   p.rayleigh_alpha = alpha;
@@ -53,10 +49,8 @@ main(int argc, char **argv)
   s.v.reinit(n);
   integrator.initialize(s);
 
-  Vector<double> ez(n), Mv(n);
-  for (types::global_dof_index i = 0; i < n; ++i)
-    ez[i] = component[i] == 2 ? 1. : 0.;
-  const auto momentum = [&](const Dynamics::State &st) {
+  Vector<double> Mv(n);
+  const auto     momentum = [&](const Dynamics::State &st) {
     M.vmult(Mv, st.v);
     return ez * Mv;
   };
