@@ -10,6 +10,7 @@
 // (doc/theory/06-dynamics.md, sec. 1).
 
 #include "../tests.h"
+#include "scenes.h"
 
 #include <sstream>
 #include <tissue_contact/dynamics/mass_matrix.h>
@@ -22,37 +23,26 @@ using namespace TissueContactTests;
 
 namespace
 {
+  /** The oscillator's bar (scenes.h), slenderer, stiffer, under gravity. */
   std::string
   cantilever(const std::string &model)
   {
-    return R"(
+    return std::string(DynamicsTestScenes::bar) + R"(
 subsection Mesh
-  set Source           = box
-  set Box lower corner = 0, 0, 0
   set Box upper corner = 1, 0.12, 0.12
   set Box subdivisions = 10, 1, 1
 end
 subsection Bodies
   subsection Body 0
-    set Model   = )" +
-           model + R"(
-    set Mu      = 1000
-    set Lambda  = 2000
-    set Density = 1
-  end
-end
-subsection Boundary conditions
-  subsection Dirichlet 0
-    set Boundary id = 0
+    set Model  = )" +
+           model +
+           R"(
+    set Mu     = 1000
+    set Lambda = 2000
   end
 end
 subsection Loads
   set Gravity = 0, 0, -10
-end
-subsection Output
-  set Write VTU    = false
-  set Print timing = false
-  set Directory    = .
 end
 )";
   }
