@@ -12,7 +12,7 @@ namespace TissueContact
   namespace Contact
   {
     ContactAssembler::ContactAssembler(
-      const Elasticity::Discretization   &disc,
+      const Discretization   &disc,
       const std::set<types::boundary_id> &contact_surfaces,
       const std::vector<ObstacleContact> &obstacles,
       const std::vector<BodyContact>     &pairs)

@@ -2,6 +2,7 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/numerics/matrix_tools.h>
 #include <limits>
+#include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/dynamics/ida_integrator.h>
 
 namespace TissueContact
@@ -215,16 +216,26 @@ namespace TissueContact
             y_dot[n + i] = a[i];
           }
       }
-      const unsigned int steps = ida.solve_dae(y, y_dot);
+      unsigned int steps = 0;
+      try
+        {
+          steps = ida.solve_dae(y, y_dot);
+        }
+      catch (const ExceptionBase &e)
+        {
+          // SUNDIALS' own error codes (a failed step, a convergence test
+          // failure) come as deal.II exceptions
+          throw SolveFailed(error_message(e));
+        }
       // IDA reports some failures (too many steps before an output time)
       // only on the screen: check that it got to the end
       const double stopped = std::min(off_schedule, last_output);
-      AssertThrow(std::isinf(off_schedule) &&
-                    last_output >= data.final_time - 1e-9 * data.final_time,
-                  ExcMessage("IDA stopped at t = " + std::to_string(stopped) +
-                             " before an output time (too many steps or a "
-                             "failed step: loosen the tolerances or shorten "
-                             "the output interval)"));
+      if (!std::isinf(off_schedule) ||
+          last_output < data.final_time - 1e-9 * data.final_time)
+        throw SolveFailed("IDA stopped at t = " + std::to_string(stopped) +
+                          " before an output time (too many steps or a "
+                          "failed step: loosen the tolerances or shorten the "
+                          "output interval)");
       split(y, s.u, s.v);
       Vector<double> u_dot;
       split(y_dot, u_dot, s.a);

@@ -13,7 +13,7 @@ namespace TissueContact
       template <typename F>
       void
       for_each_cell_mass(
-        const Elasticity::Discretization                         &disc,
+        const Discretization                         &disc,
         const std::map<types::material_id, Elasticity::BodyData> &bodies,
         const F                                                  &f)
       {
@@ -51,7 +51,7 @@ namespace TissueContact
 
     void
     assemble_consistent_mass(
-      const Elasticity::Discretization                         &disc,
+      const Discretization                         &disc,
       const std::map<types::material_id, Elasticity::BodyData> &bodies,
       SparseMatrix<double>                                     &M)
     {
@@ -68,7 +68,7 @@ namespace TissueContact
 
     Vector<double>
     lumped_mass(
-      const Elasticity::Discretization                         &disc,
+      const Discretization                         &disc,
       const std::map<types::material_id, Elasticity::BodyData> &bodies)
     {
       Vector<double> m_lumped(disc.n_dofs());
@@ -103,7 +103,7 @@ namespace TissueContact
 
     double
     stable_time_step_estimate(
-      const Elasticity::Discretization                         &disc,
+      const Discretization                         &disc,
       const std::map<types::material_id, Elasticity::BodyData> &bodies)
     {
       double dt = std::numeric_limits<double>::infinity();

@@ -2,6 +2,7 @@
 #include <deal.II/numerics/matrix_tools.h>
 #include <limits>
 #include <sstream>
+#include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/dynamics/time_integrator.h>
 
 // Symbols follow doc/theory/06-dynamics.md.
@@ -322,16 +323,19 @@ namespace TissueContact
       const double lambda = load_factor(s.t + dt);
       for (const auto &t : problem.prescribed_values(lambda))
         u[t.first] = t.second;
-      Solvers::SolveStatistics statistics;
-      const std::string        failure =
-        newton.solve_at(effective, u, lambda, 0, statistics);
-      last_iterations = statistics.newton_iterations;
-      if (!failure.empty())
+      SolveStatistics statistics;
+      try
         {
-          std::ostringstream msg;
-          msg << "at t = " << s.t << " with step " << dt << ": " << failure;
-          throw std::runtime_error(msg.str());
+          newton.solve_at(effective, u, lambda, 0, statistics);
         }
+      catch (const SolveFailed &e)
+        {
+          last_iterations = statistics.newton_iterations;
+          std::ostringstream msg;
+          msg << "at t = " << s.t << " with step " << dt << ": " << e.what();
+          throw SolveFailed(msg.str());
+        }
+      last_iterations = statistics.newton_iterations;
       Vector<double> v, a;
       effective.kinematics(u, v, a);
       s.u.swap(u);
@@ -383,7 +387,7 @@ namespace TissueContact
                           " (an element inverted; the kinetic energy is ")
               << (valid ? parameters.blow_up_factor : kinetic)
               << "): choose a step below the stable estimate";
-          throw std::runtime_error(msg.str());
+          throw SolveFailed(msg.str());
         }
     }
 
@@ -408,7 +412,7 @@ namespace TissueContact
             {
               implicit_step(trial, h);
             }
-          catch (const std::runtime_error &e)
+          catch (const SolveFailed &e)
             {
               reason = e.what();
               h *= 0.5; // cut back and retry from s
@@ -421,12 +425,10 @@ namespace TissueContact
               h;
           return h;
         }
-      AssertThrow(false,
-                  ExcMessage("time integration failed: the step fell below "
-                             "the minimum " +
-                             std::to_string(parameters.minimum_step) +
-                             "; last failure " + reason));
-      return 0.;
+      throw SolveFailed("time integration failed: the step fell below the "
+                        "minimum " +
+                        std::to_string(parameters.minimum_step) +
+                        "; last failure " + reason);
     }
   } // namespace Dynamics
 } // namespace TissueContact

@@ -21,7 +21,7 @@ namespace TissueContact
 
 
     void
-    ConvergenceLog::iteration(const Solvers::IterationInfo &i)
+    ConvergenceLog::iteration(const IterationInfo &i)
     {
       if (i.increment != last_increment || i.iteration == 0)
         {

@@ -26,7 +26,7 @@ namespace TissueContact
 
 
     std::string
-    VtuSeriesWriter::write(const Elasticity::Discretization   &disc,
+    VtuSeriesWriter::write(const Discretization   &disc,
                            const Elasticity::ElasticAssembler &assembler,
                            const Vector<double>               &u,
                            const double                        time,

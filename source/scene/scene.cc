@@ -290,7 +290,7 @@ namespace TissueContact
 
 
     std::vector<PrescribedDof>
-    Scene::prescribed_dofs(const Elasticity::Discretization &disc) const
+    Scene::prescribed_dofs(const Discretization &disc) const
     {
       const std::vector<Point<3>>          X  = disc.support_points();
       const auto                          &fe = disc.fe;

@@ -136,9 +136,9 @@ namespace TissueContact
   }
 
 
-  Solvers::SolveStatistics
+  SolveStatistics
   StaticSimulation::solve_quietly(
-    const std::function<void(const Solvers::IterationInfo &)> &on_iteration)
+    const std::function<void(const IterationInfo &)> &on_iteration)
   {
     Solvers::IncrementalNewtonSolver solver(scene.parameters.solver);
     solver.on_iteration = on_iteration;
@@ -147,7 +147,7 @@ namespace TissueContact
   }
 
 
-  Solvers::SolveStatistics
+  SolveStatistics
   StaticSimulation::run()
   {
     const auto &p = scene.parameters;
@@ -183,7 +183,7 @@ namespace TissueContact
     };
 
     Solvers::IncrementalNewtonSolver solver(p.solver);
-    solver.on_iteration = [&](const Solvers::IterationInfo &i) {
+    solver.on_iteration = [&](const IterationInfo &i) {
       log.iteration(i);
     };
     solver.on_cutback = [&](const double lambda, const std::string &why) {
@@ -202,7 +202,7 @@ namespace TissueContact
     if (p.output.write_vtu)
       vtu.write(disc, assembler, u, 0., depth_field());
 
-    Solvers::SolveStatistics statistics;
+    SolveStatistics statistics;
     try
       {
         this->timer = &timer;

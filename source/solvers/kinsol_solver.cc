@@ -73,7 +73,7 @@ namespace TissueContact
     }
 
 
-    std::string
+    void
     KinsolSolver::solve(NonlinearProblem &problem,
                         Vector<double>   &u,
                         const double      load_factor,
@@ -148,9 +148,8 @@ namespace TissueContact
           s << "KINSOL did not converge"
             << (failure.empty() ? "" : " (" + failure + ")") << ": "
             << error_message(e);
-          return s.str();
+          throw SolveFailed(s.str());
         }
-      return "";
     }
   } // namespace Solvers
 } // namespace TissueContact

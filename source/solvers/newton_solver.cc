@@ -1,6 +1,7 @@
 #include <cmath>
 #include <deal.II/numerics/matrix_tools.h>
 #include <sstream>
+#include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/solvers/newton_solver.h>
 
 namespace TissueContact
@@ -144,7 +145,7 @@ namespace TissueContact
     }
 
 
-    std::string
+    void
     IncrementalNewtonSolver::newton(NonlinearProblem  &problem,
                                     Vector<double>    &u,
                                     const double       load_factor,
@@ -202,11 +203,11 @@ namespace TissueContact
             valid = problem.assemble(u, load_factor, R, &K);
           }
           if (!valid)
-            return "an element is inverted at the start of the Newton "
-                   "iteration";
+            throw SolveFailed("an element is inverted at the start of the "
+                              "Newton iteration");
           const auto [r, reaction] = norms(R);
           if (!std::isfinite(r))
-            return "the residual is not finite";
+            throw SolveFailed("the residual is not finite");
           const double tolerance =
             std::max(parameters.absolute_tolerance,
                      parameters.residual_tolerance * std::max(f_ext, reaction));
@@ -225,7 +226,7 @@ namespace TissueContact
               info.step_length = 0.;
               if (on_iteration)
                 on_iteration(info);
-              return "";
+              return;
             }
           if (it == parameters.max_iterations)
             {
@@ -233,7 +234,7 @@ namespace TissueContact
               s << "Newton did not converge in " << it
                 << " iterations (|R| = " << r << ", tolerance " << tolerance
                 << ")";
-              return s.str();
+              throw SolveFailed(s.str());
             }
 
           // LOOP 2: (K + D/dt) du = -R, du = gap on prescribed DoFs
@@ -315,7 +316,7 @@ namespace TissueContact
               msg << "the line search found no step without inverted "
                      "elements and with a smaller residual after "
                   << parameters.max_halvings << " halvings";
-              return msg.str();
+              throw SolveFailed(msg.str());
             }
           u.swap(u_trial);
           info.update_norm = s * du.l2_norm();
@@ -328,7 +329,7 @@ namespace TissueContact
     }
 
 
-    std::string
+    void
     IncrementalNewtonSolver::solve_at(NonlinearProblem  &problem,
                                       Vector<double>    &u,
                                       const double       load_factor,
@@ -337,7 +338,10 @@ namespace TissueContact
                                       TimerOutput       *timer)
     {
       if (!parameters.use_kinsol)
-        return newton(problem, u, load_factor, increment, statistics, timer);
+        {
+          newton(problem, u, load_factor, increment, statistics, timer);
+          return;
+        }
       // KINSOL's stopping test is on the largest residual entry: the force
       // scale is the applied load, or the residual of the initial guess
       // with the prescribed values in place for displacement-driven steps
@@ -357,12 +361,18 @@ namespace TissueContact
                                         parameters.residual_tolerance * scale);
       unsigned int       iterations = 0;
       const KinsolSolver kinsol(parameters.kinsol, parameters.linear_solver);
-      const std::string  failure =
-        kinsol.solve(problem, u, load_factor, tolerance, iterations);
-      statistics.newton_iterations += iterations;
       (void)increment;
       (void)timer;
-      return failure;
+      try
+        {
+          kinsol.solve(problem, u, load_factor, tolerance, iterations);
+        }
+      catch (const SolveFailed &)
+        {
+          statistics.newton_iterations += iterations;
+          throw;
+        }
+      statistics.newton_iterations += iterations;
     }
 
 
@@ -395,12 +405,25 @@ namespace TissueContact
                 u_trial[t.first] = t.second;
               used_prediction = true;
             }
-          std::string failure = solve_at(problem,
-                                         u_trial,
-                                         lambda_new,
-                                         statistics.increments + 1,
-                                         statistics,
-                                         timer);
+          // one nonlinear solve; the reason of its failure, empty if it
+          // converged
+          const auto attempt = [&]() -> std::string {
+            try
+              {
+                solve_at(problem,
+                         u_trial,
+                         lambda_new,
+                         statistics.increments + 1,
+                         statistics,
+                         timer);
+              }
+            catch (const SolveFailed &e)
+              {
+                return e.what();
+              }
+            return "";
+          };
+          std::string failure = attempt();
           if (!failure.empty() && used_prediction)
             {
               // the extrapolated guess may invert elements or lie outside
@@ -410,12 +433,7 @@ namespace TissueContact
                 on_cutback(lambda_new,
                            failure + "; retrying without the predictor");
               u_trial = u;
-              failure = solve_at(problem,
-                                 u_trial,
-                                 lambda_new,
-                                 statistics.increments + 1,
-                                 statistics,
-                                 timer);
+              failure = attempt();
             }
 
           if (failure.empty())
@@ -450,8 +468,8 @@ namespace TissueContact
                   << (parameters.quasi_viscosity ?
                         " or a smaller Viscosity factor" :
                         " or Quasi-viscosity = true");
-              AssertThrow(increment_size >= parameters.minimum_increment,
-                          ExcMessage(msg.str()));
+              if (increment_size < parameters.minimum_increment)
+                throw SolveFailed(msg.str());
             }
         }
       return statistics;

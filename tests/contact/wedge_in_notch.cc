@@ -74,7 +74,7 @@ main(int argc, char **argv)
         try
           {
             const auto stats =
-              sim.solve_quietly([&](const Solvers::IterationInfo &i) {
+              sim.solve_quietly([&](const IterationInfo &i) {
                 csv << eps << ',' << method << ',' << total++ << ','
                     << i.increment << ',' << i.load_factor << ',' << i.iteration
                     << ',' << i.residual_norm << '\n';

@@ -32,7 +32,7 @@ main()
 
   for (const unsigned int degree : {1u, 2u})
     {
-      Elasticity::Discretization disc(tria, degree);
+      Discretization disc(tria, degree);
       SparseMatrix<double>       M(disc.sparsity_pattern);
       Dynamics::assemble_consistent_mass(disc, bodies, M);
       const Vector<double> lumped    = Dynamics::lumped_mass(disc, bodies);

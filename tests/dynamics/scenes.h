@@ -219,7 +219,7 @@ end
     std::vector<std::vector<types::global_dof_index>> dofs;
     std::vector<unsigned int>                         component;
 
-    explicit RodTips(const Elasticity::Discretization &disc)
+    explicit RodTips(const Discretization &disc)
       : component(disc.dof_components())
     {
       const auto   X = disc.support_points();

@@ -42,7 +42,7 @@ check(const unsigned int degree)
     std::make_unique<Materials::MooneyRivlin>(5., 1., 50.), 2., 3., fiber);
   const Materials::Veronda m1(7., 8., 100.);
 
-  const Elasticity::Discretization disc(tria, degree);
+  const Discretization disc(tria, degree);
   Elasticity::DeadLoads            loads;
   loads.gravity      = Tensor<1, 3>({0., 0., -2.});
   loads.tractions[1] = Tensor<1, 3>({0.5, 0.3, -1.});

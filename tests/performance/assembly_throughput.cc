@@ -47,7 +47,7 @@ namespace
 
   // A smooth displacement with J > 0 (so every material is evaluated).
   Vector<double>
-  some_displacement(const Elasticity::Discretization &disc)
+  some_displacement(const Discretization &disc)
   {
     const auto     X         = disc.support_points();
     const auto     component = disc.dof_components();
@@ -62,7 +62,7 @@ namespace
   // Seconds per residual + tangent assembly (best of a few repetitions).
   double
   time_assembly(const Elasticity::ElasticAssembler &assembler,
-                const Elasticity::Discretization   &disc,
+                const Discretization   &disc,
                 const Vector<double>               &u)
   {
     Vector<double>       R(disc.n_dofs());
@@ -108,7 +108,7 @@ main(int argc, char **argv)
           Triangulation<3> tria;
           GridGenerator::subdivided_hyper_rectangle_with_simplices(
             tria, {n, n, n}, Point<3>(0, 0, 0), Point<3>(1, 1, 1));
-          const Elasticity::Discretization disc(tria, degree);
+          const Discretization disc(tria, degree);
           const Vector<double>             u = some_displacement(disc);
           for (const auto &m : materials)
             {
@@ -146,7 +146,7 @@ main(int argc, char **argv)
       Triangulation<3> tria;
       GridGenerator::subdivided_hyper_rectangle_with_simplices(
         tria, {n, n, n}, Point<3>(0, 0, 0), Point<3>(1, 1, 1));
-      const Elasticity::Discretization disc(tria, degree);
+      const Discretization disc(tria, degree);
       Elasticity::DeadLoads            loads;
       loads.gravity = Tensor<1, 3>({0., 0., -1.});
       const Elasticity::ElasticAssembler        assembler(disc,

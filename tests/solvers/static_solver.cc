@@ -33,7 +33,7 @@ namespace
   class PatchProblem : public Solvers::NonlinearProblem
   {
   public:
-    PatchProblem(const Elasticity::Discretization   &disc,
+    PatchProblem(const Discretization   &disc,
                  const Elasticity::ElasticAssembler &assembler,
                  const Tensor<2, 3>                 &H)
       : disc(disc)
@@ -100,7 +100,7 @@ namespace
     }
 
   private:
-    const Elasticity::Discretization           &disc;
+    const Discretization           &disc;
     const Elasticity::ElasticAssembler         &assembler;
     const Tensor<2, 3>                          H;
     const std::vector<Point<3>>                 X;
@@ -117,7 +117,7 @@ namespace
                                                              Point<3>(1, 1, 1));
     GridTools::distort_random(0.25, tria, true, 3);
     const Materials::MooneyRivlin      material(5., 1., 50.);
-    const Elasticity::Discretization   disc(tria, degree);
+    const Discretization   disc(tria, degree);
     const Elasticity::ElasticAssembler assembler(disc,
                                                  {{0, {&material, 1.}}},
                                                  Elasticity::DeadLoads());

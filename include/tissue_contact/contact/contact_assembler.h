@@ -10,7 +10,7 @@
 #include <tissue_contact/contact/bounding_volume_tree.h>
 #include <tissue_contact/contact/penalty_kernel.h>
 #include <tissue_contact/contact/point_collocation.h>
-#include <tissue_contact/elasticity/discretization.h>
+#include <tissue_contact/base/discretization.h>
 #include <vector>
 
 namespace TissueContact
@@ -50,7 +50,7 @@ namespace TissueContact
     class ContactAssembler
     {
     public:
-      ContactAssembler(const Elasticity::Discretization   &disc,
+      ContactAssembler(const Discretization   &disc,
                        const std::set<types::boundary_id> &contact_surfaces,
                        const std::vector<ObstacleContact> &obstacles,
                        const std::vector<BodyContact>     &pairs = {});

@@ -3,7 +3,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <map>
-#include <tissue_contact/elasticity/discretization.h>
+#include <tissue_contact/base/discretization.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 
 namespace TissueContact
@@ -22,7 +22,7 @@ namespace TissueContact
      */
     void
     assemble_consistent_mass(
-      const Elasticity::Discretization                         &disc,
+      const Discretization                         &disc,
       const std::map<types::material_id, Elasticity::BodyData> &bodies,
       SparseMatrix<double>                                     &M);
 
@@ -35,7 +35,7 @@ namespace TissueContact
      */
     Vector<double>
     lumped_mass(
-      const Elasticity::Discretization                         &disc,
+      const Discretization                         &disc,
       const std::map<types::material_id, Elasticity::BodyData> &bodies);
 
     /**
@@ -49,7 +49,7 @@ namespace TissueContact
      */
     double
     stable_time_step_estimate(
-      const Elasticity::Discretization                         &disc,
+      const Discretization                         &disc,
       const std::map<types::material_id, Elasticity::BodyData> &bodies);
   } // namespace Dynamics
 } // namespace TissueContact

@@ -5,7 +5,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <map>
-#include <tissue_contact/elasticity/discretization.h>
+#include <tissue_contact/base/discretization.h>
 #include <tissue_contact/materials/hyperelastic_material.h>
 #include <tissue_contact/materials/material.h>
 

@@ -3,7 +3,7 @@
 #include <fstream>
 #include <ostream>
 #include <string>
-#include <tissue_contact/solvers/newton_solver.h>
+#include <tissue_contact/base/solve_statistics.h>
 
 namespace TissueContact
 {
@@ -23,7 +23,7 @@ namespace TissueContact
       ConvergenceLog(std::ostream &screen, const std::string &csv_file);
 
       void
-      iteration(const Solvers::IterationInfo &info);
+      iteration(const IterationInfo &info);
 
       void
       cutback(const double load_factor, const std::string &reason);

@@ -2,7 +2,7 @@
 
 #include <deal.II/lac/vector.h>
 #include <string>
-#include <tissue_contact/elasticity/discretization.h>
+#include <tissue_contact/base/discretization.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <utility>
 #include <vector>
@@ -31,7 +31,7 @@ namespace TissueContact
       /** Write the state @p u at load factor (or time) @p time; returns the
        * file name written. */
       std::string
-      write(const Elasticity::Discretization   &disc,
+      write(const Discretization   &disc,
             const Elasticity::ElasticAssembler &assembler,
             const Vector<double>               &u,
             const double                        time,

@@ -3,7 +3,7 @@
 #include <deal.II/grid/tria.h>
 #include <memory>
 #include <tissue_contact/contact/contact_assembler.h>
-#include <tissue_contact/elasticity/discretization.h>
+#include <tissue_contact/base/discretization.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/materials/material.h>
 #include <tissue_contact/scene/parameters.h>
@@ -57,7 +57,7 @@ namespace TissueContact
       /** Every prescribed DoF of @p disc: boundary conditions first, then
        * rigid bodies (a later entry for the same DoF wins). */
       std::vector<PrescribedDof>
-      prescribed_dofs(const Elasticity::Discretization &disc) const;
+      prescribed_dofs(const Discretization &disc) const;
 
     private:
       std::vector<std::unique_ptr<Materials::Material>> materials;

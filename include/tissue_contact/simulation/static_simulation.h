@@ -4,7 +4,7 @@
 #include <memory>
 #include <ostream>
 #include <tissue_contact/contact/contact_assembler.h>
-#include <tissue_contact/elasticity/discretization.h>
+#include <tissue_contact/base/discretization.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/scene/scene.h>
 #include <tissue_contact/solvers/newton_solver.h>
@@ -29,14 +29,14 @@ namespace TissueContact
 
     /** Solve and write output. Throws (after keeping every result already
      * written) if the solve fails. */
-    Solvers::SolveStatistics
+    SolveStatistics
     run();
 
     /** Solve without writing any file (for tests); @p on_iteration, if
      * given, sees every Newton iteration. On failure the exception
      * propagates and solution() holds the last converged increment. */
-    Solvers::SolveStatistics
-    solve_quietly(const std::function<void(const Solvers::IterationInfo &)>
+    SolveStatistics
+    solve_quietly(const std::function<void(const IterationInfo &)>
                     &on_iteration = {});
 
     const Vector<double> &
@@ -44,7 +44,7 @@ namespace TissueContact
     {
       return u;
     }
-    const Elasticity::Discretization &
+    const Discretization &
     discretization() const
     {
       return disc;
@@ -114,7 +114,7 @@ namespace TissueContact
     rebuild_sparsity_pattern(const Vector<double> &u);
 
     Scene::Scene                               scene;
-    Elasticity::Discretization                 disc;
+    Discretization                 disc;
     Elasticity::ElasticAssembler               assembler;
     std::unique_ptr<Contact::ContactAssembler> contact;
     /** The run's timer while run() is active: contact assembly is timed as

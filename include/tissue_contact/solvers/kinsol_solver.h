@@ -45,10 +45,10 @@ namespace TissueContact
        * Solve @p problem at @p load_factor from the initial guess @p u.
        * @p tolerance: the largest entry of the residual on the free DoFs at
        * convergence (used unless the prm sets a function tolerance).
-       * Returns an empty string on success, else why it failed; @p
-       * iterations gets the number of nonlinear iterations.
+       * @p iterations gets the number of nonlinear iterations. Throws
+       * SolveFailed with KINSOL's reason if it does not converge.
        */
-      std::string
+      void
       solve(NonlinearProblem &problem,
             Vector<double>   &u,
             const double      load_factor,

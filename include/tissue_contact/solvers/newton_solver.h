@@ -4,6 +4,7 @@
 #include <deal.II/base/timer.h>
 #include <functional>
 #include <string>
+#include <tissue_contact/base/solve_statistics.h>
 #include <tissue_contact/solvers/kinsol_solver.h>
 #include <tissue_contact/solvers/linear_solver.h>
 #include <tissue_contact/solvers/nonlinear_problem.h>
@@ -12,27 +13,6 @@ namespace TissueContact
 {
   namespace Solvers
   {
-    /** One Newton iteration, as shown on screen and in the CSV log. */
-    struct IterationInfo
-    {
-      unsigned int increment         = 0;
-      double       load_factor       = 0.;
-      unsigned int iteration         = 0;
-      double       residual_norm     = 0.; // |R| on the free DoFs
-      double       update_norm       = 0.; // |s du|
-      double       step_length       = 1.; // line-search factor s
-      unsigned int linear_iterations = 0;
-    };
-
-    /** Summary of a whole solve. */
-    struct SolveStatistics
-    {
-      unsigned int increments        = 0;
-      unsigned int cutbacks          = 0;
-      unsigned int newton_iterations = 0;
-      unsigned int linear_iterations = 0;
-    };
-
     /**
      * The static solver of dissertation sec. 4.7 (doc/theory/04-solver.md):
      * - LOOP 1, adaptive incremental loading of the load factor
@@ -99,8 +79,9 @@ namespace TissueContact
 
       /**
        * Drive @p problem from @p u (the state at load factor 0) to load
-       * factor 1. Throws an ExcMessage naming the load factor and the reason
-       * if the increment falls below the minimum. @p timer, if given, gets
+       * factor 1. A failed increment (SolveFailed) is retried without the
+       * predictor, then halved; throws SolveFailed naming the load factor
+       * and the last reason if the increment falls below the minimum. @p timer, if given, gets
        * the sections "assembly" and "linear solve".
        */
       SolveStatistics
@@ -110,10 +91,10 @@ namespace TissueContact
 
       /**
        * One Newton solve (LOOPs 2 and 3) at a fixed load factor starting
-       * from @p u. Returns an empty string on success, else why it failed
-       * (u is then unspecified).
+       * from @p u. Throws SolveFailed with the reason if it fails (u is
+       * then unspecified).
        */
-      std::string
+      void
       newton(NonlinearProblem  &problem,
              Vector<double>    &u,
              const double       load_factor,
@@ -123,10 +104,10 @@ namespace TissueContact
 
       /**
        * One nonlinear solve at @p load_factor by the configured solver:
-       * newton(), or KINSOL (then on_iteration is not called). Returns an
-       * empty string on success, else why it failed.
+       * newton(), or KINSOL (then on_iteration is not called). Throws
+       * SolveFailed with the reason if it fails.
        */
-      std::string
+      void
       solve_at(NonlinearProblem  &problem,
                Vector<double>    &u,
                const double       load_factor,

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_fe.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/sparsity_pattern.h>
+
+namespace TissueContact
+{
+  using namespace dealii;
+
+  /**
+   * The finite element space of the displacement: vector-valued
+   * @f$P_p@f$ tetrahedra, @c FESystem<3>(FE_SimplexP<3>(p), 3) with
+   * @f$p\in\{1,2\}@f$, the affine simplex mapping, Gauss quadratures exact
+   * for the mass matrix (@f$2p@f$) in cells and faces, the DoF handler and
+   * the sparsity pattern of the stiffness matrix.
+   */
+  class Discretization
+  {
+  public:
+    /** Distribute DoFs of degree @p degree on @p triangulation (which must
+     * outlive this object). */
+    Discretization(const Triangulation<3> &triangulation,
+                   const unsigned int      degree);
+
+    const unsigned int     degree;
+    const FESystem<3>      fe;
+    const MappingFE<3>     mapping;
+    const QGaussSimplex<3> quadrature;
+    const QGaussSimplex<2> face_quadrature;
+    DoFHandler<3>          dof_handler;
+    SparsityPattern        sparsity_pattern;
+
+    /** Number of displacement unknowns. */
+    types::global_dof_index
+    n_dofs() const
+    {
+      return dof_handler.n_dofs();
+    }
+
+    /** Reference position of the support point of every DoF. */
+    std::vector<Point<3>>
+    support_points() const;
+
+    /** The displacement component (0, 1, 2) of every DoF. */
+    std::vector<unsigned int>
+    dof_components() const;
+  };
+} // namespace TissueContact

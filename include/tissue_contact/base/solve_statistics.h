@@ -1,0 +1,27 @@
+#pragma once
+
+namespace TissueContact
+{
+  /** One Newton iteration, as shown on screen and in the CSV log
+   * (Output::ConvergenceLog). */
+  struct IterationInfo
+  {
+    unsigned int increment         = 0;
+    double       load_factor       = 0.;
+    unsigned int iteration         = 0;
+    double       residual_norm     = 0.; // |R| on the free DoFs
+    double       update_norm       = 0.; // |s du|
+    double       step_length       = 1.; // line-search factor s
+    unsigned int linear_iterations = 0;
+  };
+
+  /** Summary of a whole solve: converged load increments, cut-backs, and
+   * the Newton and linear iterations they took. */
+  struct SolveStatistics
+  {
+    unsigned int increments        = 0;
+    unsigned int cutbacks          = 0;
+    unsigned int newton_iterations = 0;
+    unsigned int linear_iterations = 0;
+  };
+} // namespace TissueContact

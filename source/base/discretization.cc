@@ -1,0 +1,49 @@
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <tissue_contact/base/discretization.h>
+
+namespace TissueContact
+{
+  Discretization::Discretization(const Triangulation<3> &triangulation,
+                                 const unsigned int      degree)
+    : degree(degree)
+    , fe(FE_SimplexP<3>(degree), 3)
+    , mapping(FE_SimplexP<3>(1))
+    , quadrature(degree + 1)
+    , face_quadrature(degree + 1)
+    , dof_handler(triangulation)
+  {
+    AssertThrow(degree == 1 || degree == 2,
+                ExcMessage("Polynomial degree must be 1 (linear "
+                           "tetrahedra) or 2 (quadratic tetrahedra), not " +
+                           std::to_string(degree)));
+    dof_handler.distribute_dofs(fe);
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler, dsp);
+    sparsity_pattern.copy_from(dsp);
+  }
+
+
+  std::vector<Point<3>>
+  Discretization::support_points() const
+  {
+    std::vector<Point<3>> points(dof_handler.n_dofs());
+    DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
+    return points;
+  }
+
+
+  std::vector<unsigned int>
+  Discretization::dof_components() const
+  {
+    std::vector<unsigned int>            component(dof_handler.n_dofs());
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int k = 0; k < dofs.size(); ++k)
+          component[dofs[k]] = fe.system_to_component_index(k).first;
+      }
+    return component;
+  }
+} // namespace TissueContact
