@@ -84,9 +84,7 @@ main(int argc, char **argv)
         }
       if (arg == "--print-parameters")
         {
-          dealii::ParameterHandler prm;
-          Scene::SceneParameters::declare(prm);
-          prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
+          Scene::SceneParameters::print_reference(std::cout);
           return 0;
         }
       if (!arg.empty() && arg[0] == '-')

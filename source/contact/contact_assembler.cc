@@ -13,12 +13,11 @@ namespace TissueContact
   {
     ContactAssembler::ContactAssembler(
       const Discretization   &disc,
-      const std::set<types::boundary_id> &contact_surfaces,
-      const std::vector<ObstacleContact> &obstacles,
-      const std::vector<BodyContact>     &pairs)
-      : obstacles(obstacles)
-      , pairs(pairs)
+      const Parameters     &parameters)
+      : obstacles(parameters.obstacles)
+      , pairs(parameters.pairs)
     {
+      const auto &contact_surfaces = parameters.surfaces;
       const auto &tria = disc.dof_handler.get_triangulation();
       X                = tria.get_vertices();
       vertex_dofs.resize(X.size());

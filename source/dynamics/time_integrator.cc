@@ -3,6 +3,7 @@
 #include <limits>
 #include <sstream>
 #include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/base/parameter_tools.h>
 #include <tissue_contact/dynamics/time_integrator.h>
 
 // Symbols follow doc/theory/06-dynamics.md.
@@ -192,29 +193,235 @@ namespace TissueContact
     } // namespace
 
 
-    Scheme
-    scheme_from_string(const std::string &name)
+    const std::vector<std::pair<std::string, Scheme>> &
+    scheme_names()
     {
-      if (name == "implicit Euler")
-        return Scheme::implicit_euler;
-      if (name == "Newmark")
-        return Scheme::newmark;
-      if (name == "central difference")
-        return Scheme::central_difference;
-      if (name == "quasistatic")
-        return Scheme::quasistatic;
-      AssertThrow(false,
-                  ExcMessage("unknown time integration scheme '" + name +
-                             "' (implicit Euler, Newmark, central difference, "
-                             "quasistatic)"));
-      return Scheme::newmark;
+      static const std::vector<std::pair<std::string, Scheme>> names = {
+        {"Newmark", Scheme::newmark},
+        {"implicit Euler", Scheme::implicit_euler},
+        {"central difference", Scheme::central_difference},
+        {"IDA", Scheme::ida},
+        {"quasistatic", Scheme::quasistatic}};
+      return names;
+    }
+
+
+    std::string
+    scheme_name(const Scheme scheme)
+    {
+      for (const auto &n : scheme_names())
+        if (n.second == scheme)
+          return n.first;
+      Assert(false, ExcInternalError());
+      return "";
+    }
+
+
+    SUNDIALS::IDA<Vector<double>>::AdditionalData
+    TimeIntegrator::Parameters::ida_data() const
+    {
+      auto data          = ida;
+      data.initial_time  = 0.;
+      data.final_time    = end_time;
+      data.output_period = output_interval > 0. ? output_interval : time_step;
+      data.ic_type       = SUNDIALS::IDA<Vector<double>>::AdditionalData::none;
+      data.reset_type    = SUNDIALS::IDA<Vector<double>>::AdditionalData::none;
+      return data;
+    }
+
+
+    namespace
+    {
+      /** Subsection "IDA": the entries of SUNDIALS' IDA the project uses,
+       * bound to @p data and documented (deal.II's add_parameters() leaves
+       * most undocumented, and declares times and initial-condition
+       * corrections that the project sets itself: ida_data()). */
+      void
+      declare_ida_parameters(ParameterHandler                              &prm,
+                             SUNDIALS::IDA<Vector<double>>::AdditionalData &data)
+      {
+        prm.enter_subsection("IDA");
+        prm.enter_subsection("Running parameters");
+        prm.add_parameter("Initial step size",
+                          data.initial_step_size,
+                          "IDA's first time step (time units, > 0); it then "
+                          "adapts the step to its error control.",
+                          Patterns::Double(0.));
+        prm.add_parameter("Minimum step size",
+                          data.minimum_step_size,
+                          "IDA stops with an error below this step (time "
+                          "units, >= 0).",
+                          Patterns::Double(0.));
+        prm.add_parameter("Maximum order of BDF",
+                          data.maximum_order,
+                          "Highest order of IDA's backward differentiation "
+                          "formulas (1..5); lower orders are more stable, "
+                          "higher ones more accurate on smooth motion.",
+                          Patterns::Integer(1, 5));
+        prm.add_parameter("Maximum number of nonlinear iterations",
+                          data.maximum_non_linear_iterations,
+                          "Newton iterations per IDA step before it cuts the "
+                          "step (>= 1).",
+                          Patterns::Integer(1));
+        prm.leave_subsection();
+        prm.enter_subsection("Error control");
+        prm.add_parameter("Absolute error tolerance",
+                          data.absolute_tolerance,
+                          "atol of IDA's local error test |e_i| <= rtol |y_i| "
+                          "+ atol, in the units of y = (u, v) (length and "
+                          "velocity); set it near the scale of the solution "
+                          "(doc/theory/06-dynamics.md sec. 8).",
+                          Patterns::Double(0.));
+        prm.add_parameter("Relative error tolerance",
+                          data.relative_tolerance,
+                          "rtol of IDA's local error test (dimensionless, "
+                          ">= 0).",
+                          Patterns::Double(0.));
+        prm.add_parameter("Ignore algebraic terms for error computations",
+                          data.ignore_algebraic_terms_for_errors,
+                          "Leave the algebraic equations (the prescribed "
+                          "DoFs) out of the local error test.",
+                          Patterns::Bool());
+        prm.leave_subsection();
+        prm.leave_subsection();
+      }
+    } // namespace
+
+
+    void
+    TimeIntegrator::Parameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time integration");
+      add_selection<bool>(
+        prm,
+        "Analysis",
+        dynamic,
+        {{"static", false}, {"dynamic", true}},
+        "static: incremental loading to equilibrium (no mass); dynamic: "
+        "integrate the equations of motion in time "
+        "(doc/theory/06-dynamics.md).");
+      add_selection<Scheme>(
+        prm,
+        "Scheme",
+        scheme,
+        scheme_names(),
+        "Newmark (beta, gamma below; average acceleration by default: no "
+        "numerical damping), implicit Euler (dissipative), central "
+        "difference (explicit, lumped mass, stable below 2/omega_max), IDA "
+        "(SUNDIALS' variable-order BDF with error control; settings in the "
+        "subsection IDA, whose times are replaced by End time and Output "
+        "interval), quasistatic (no inertia: the damping C = alpha M + beta "
+        "K_0 as a viscosity, C v + f_int(u) = f_ext(t) by backward Euler; "
+        "without damping a sequence of static solves).");
+      declare_ida_parameters(prm, ida);
+      prm.add_parameter("Time step",
+                        time_step,
+                        "The time step h (time units; > 0 for a dynamic "
+                        "analysis): every step of the fixed-step schemes, "
+                        "the largest one when Growth factor > 1, IDA's "
+                        "output period when Output interval = 0.",
+                        Patterns::Double(0.));
+      prm.add_parameter("End time",
+                        end_time,
+                        "The simulated time at which the run stops (time "
+                        "units; > 0 for a dynamic analysis); it starts at "
+                        "t = 0 from rest.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Minimum time step",
+                        minimum_step,
+                        "An implicit step whose Newton solve fails is halved "
+                        "and retried; below this size (time units, >= 0) the "
+                        "run stops.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Growth factor",
+                        growth_factor,
+                        "After a step with at most 3 Newton iterations the "
+                        "next may grow by this factor (>= 1; up to Time "
+                        "step).",
+                        Patterns::Double(1.));
+      prm.add_parameter("Newmark beta",
+                        beta,
+                        "Newmark's beta in u_{n+1} = u_n + h v_n + h^2 "
+                        "((1/2 - beta) a_n + beta a_{n+1}); 0 < beta <= 0.5 "
+                        "(0.25 with gamma = 0.5: average acceleration, "
+                        "unconditionally stable, no numerical damping).",
+                        Patterns::Double(0., 0.5));
+      prm.add_parameter("Newmark gamma",
+                        gamma,
+                        "Newmark's gamma in v_{n+1} = v_n + h ((1 - gamma) "
+                        "a_n + gamma a_{n+1}); 0..1 (0.5: second order, no "
+                        "numerical damping; > 0.5 damps high frequencies).",
+                        Patterns::Double(0., 1.));
+      prm.add_parameter("Rayleigh alpha",
+                        rayleigh_alpha,
+                        "alpha of the damping C = alpha M + beta K (1/time; "
+                        ">= 0): mass-proportional, damps slow motion.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Rayleigh beta",
+                        rayleigh_beta,
+                        "beta of C = alpha M + beta K (time; >= 0; K: see "
+                        "Rayleigh tangent): stiffness-proportional, damps "
+                        "fast vibration.",
+                        Patterns::Double(0.));
+      add_selection<bool>(
+        prm,
+        "Rayleigh tangent",
+        rayleigh_beta_current,
+        {{"initial", false}, {"step start", true}},
+        "The K of beta K. initial: K_0, the tangent at the initial state "
+        "(constant, but not objective: it over-damps slender bodies that "
+        "have rotated, doc/theory/06-dynamics.md sec. 1); step start: the "
+        "tangent at the start of every implicit step, which follows the "
+        "rotation (one more assembly per step; the explicit scheme and IDA "
+        "keep K_0).");
+      prm.add_parameter(
+        "Nodal viscosity",
+        nodal_viscosity,
+        "A time tau (>= 0): the dissertation's nodal viscosity D_a = tau "
+        "sum_e mu_e h_e / n_e (the diagonal of the static solver's "
+        "quasi-viscosity, doc/theory/04 sec. 4.4) added to the damping C as "
+        "a physical damping; a node's viscous force D_a v equals the "
+        "elastic force of its elements at the displacement tau v.",
+        Patterns::Double(0.));
+      add_selection<bool>(prm,
+                          "Mass",
+                          lumped_mass,
+                          {{"consistent", false}, {"lumped", true}},
+                          "The implicit schemes may use either; central "
+                          "difference always uses the lumped (HRZ) mass.");
+      prm.add_parameter("Ramp time",
+                        ramp_time,
+                        "Loads and prescribed motions grow linearly from "
+                        "zero over this time (time units, >= 0; 0: applied "
+                        "at t = 0).",
+                        Patterns::Double(0.));
+      prm.add_parameter("Output interval",
+                        output_interval,
+                        "Time between VTU outputs (time units, >= 0; 0: "
+                        "every step).",
+                        Patterns::Double(0.));
+      prm.leave_subsection();
+    }
+
+
+    void
+    TimeIntegrator::Parameters::parse_parameters(ParameterHandler &)
+    {
+      AssertThrow(!dynamic || (time_step > 0. && end_time > 0.),
+                  ExcMessage("Time integration: a dynamic analysis needs "
+                             "Time step > 0 and End time > 0"));
+      AssertThrow(scheme != Scheme::newmark || beta > 0.,
+                  ExcMessage("Time integration: Newmark beta must be > 0 "
+                             "for the implicit Newmark scheme"));
     }
 
 
     TimeIntegrator::TimeIntegrator(const Parameters           &parameters,
                                    Solvers::NonlinearProblem  &problem,
                                    const SparseMatrix<double> *mass_consistent,
-                                   const Vector<double>       *mass_lumped)
+                                   const Vector<double>       *mass_lumped,
+                                   const Solvers::IncrementalNewtonSolver::Parameters
+                                     &newton_parameters)
       : parameters(parameters)
       , problem(problem)
       , M(mass_consistent)
@@ -227,8 +434,11 @@ namespace TissueContact
                            nullptr :
                            mass_consistent,
                          mass_lumped)
-      , newton(parameters.newton)
+      , newton(newton_parameters)
     {
+      AssertThrow(parameters.scheme != Scheme::ida,
+                  ExcMessage("Scheme = IDA runs Dynamics::IdaIntegrator, not "
+                             "a TimeIntegrator"));
       AssertThrow(M != nullptr || M_lumped != nullptr,
                   ExcMessage("time integration needs a mass matrix"));
       AssertThrow(parameters.scheme != Scheme::central_difference ||
@@ -421,7 +631,7 @@ namespace TissueContact
           s = std::move(trial);
           next_dt =
             last_iterations <= parameters.easy_iterations ?
-              std::min(parameters.maximum_step, h * parameters.growth_factor) :
+              std::min(parameters.time_step, h * parameters.growth_factor) :
               h;
           return h;
         }

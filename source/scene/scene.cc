@@ -6,77 +6,13 @@
 #include <set>
 #include <sstream>
 #include <tissue_contact/base/exceptions.h>
-#include <tissue_contact/materials/fiber_reinforcement.h>
-#include <tissue_contact/materials/linear_elastic.h>
-#include <tissue_contact/materials/mooney_rivlin.h>
-#include <tissue_contact/materials/neo_hookean.h>
-#include <tissue_contact/materials/saint_venant_kirchhoff.h>
-#include <tissue_contact/materials/veronda.h>
+#include <tissue_contact/materials/material_factory.h>
 #include <tissue_contact/scene/scene.h>
 
 namespace TissueContact
 {
   namespace Scene
   {
-    std::unique_ptr<Materials::Material>
-    create_material(const BodyParameters &b)
-    {
-      using namespace Materials;
-      const std::string where =
-        "body '" + b.name + "' (material id " + std::to_string(b.id) + "): ";
-      try
-        {
-          if (b.model == "rigid")
-            return nullptr;
-          if (b.model == "linear")
-            {
-              AssertThrow(!b.fiber,
-                          ExcMessage("fibers cannot be added to the linear "
-                                     "model; use a hyperelastic one"));
-              return std::make_unique<LinearElastic>(b.mu, b.lambda);
-            }
-          std::unique_ptr<HyperelasticMaterial> ground;
-          if (b.model == "neo-Hookean")
-            ground = std::make_unique<NeoHookean>(b.mu, b.lambda);
-          else if (b.model == "Mooney-Rivlin")
-            ground = std::make_unique<MooneyRivlin>(b.C1, b.C2, b.a);
-          else if (b.model == "Veronda")
-            ground = std::make_unique<Veronda>(b.alpha, b.beta, b.a);
-          else if (b.model == "Saint Venant-Kirchhoff")
-            ground = std::make_unique<SaintVenantKirchhoff>(b.mu, b.lambda);
-          else
-            AssertThrow(false,
-                        ExcMessage("unknown material model '" + b.model + "'"));
-          if (!b.fiber)
-            return ground;
-          auto direction = std::make_shared<FunctionParser<3>>(3);
-          try
-            {
-              direction->initialize("x,y,z",
-                                    b.fiber_direction,
-                                    std::map<std::string, double>());
-            }
-          catch (...)
-            {
-              AssertThrow(false,
-                          ExcMessage("cannot parse the fiber Direction '" +
-                                     b.fiber_direction +
-                                     "': give three expressions in x, y, z "
-                                     "separated by ';'"));
-            }
-          return std::make_unique<FiberReinforcement>(std::move(ground),
-                                                      b.fiber_alpha,
-                                                      b.fiber_beta,
-                                                      direction);
-        }
-      catch (const ExceptionBase &e)
-        {
-          AssertThrow(false, ExcMessage(where + error_message(e)));
-        }
-      return nullptr;
-    }
-
-
     Scene::Scene(const SceneParameters &p)
       : parameters(p)
     {
@@ -86,7 +22,17 @@ namespace TissueContact
           AssertThrow(ids.insert(b.id).second,
                       ExcMessage("two bodies use material id " +
                                  std::to_string(b.id)));
-          materials.push_back(create_material(b));
+          try
+            {
+              materials.push_back(Materials::create_material(b.material));
+            }
+          catch (const ExceptionBase &e)
+            {
+              AssertThrow(false,
+                          ExcMessage("body '" + b.name + "' (material id " +
+                                     std::to_string(b.id) +
+                                     "): " + error_message(e)));
+            }
         }
       create_mesh();
       check_mesh();
@@ -245,39 +191,6 @@ namespace TissueContact
     }
 
 
-    std::vector<Contact::BodyContact>
-    Scene::body_contacts() const
-    {
-      std::vector<Contact::BodyContact> result;
-      for (const auto &p : parameters.contact.pairs)
-        result.push_back(
-          {p.surface_body, p.volume_body, p.penalty, p.point_collocation});
-      return result;
-    }
-
-
-    std::vector<Contact::ObstacleContact>
-    Scene::obstacles() const
-    {
-      std::vector<Contact::ObstacleContact> result;
-      for (const auto &o : parameters.contact.obstacles)
-        {
-          Contact::ObstacleContact c;
-          c.obstacle.type   = o.type == "plane" ?
-                                Contact::AnalyticObstacle::Type::plane :
-                                Contact::AnalyticObstacle::Type::sphere;
-          c.obstacle.point  = o.point;
-          c.obstacle.normal = o.normal;
-          c.obstacle.center = o.center;
-          c.obstacle.radius = o.radius;
-          c.penalty         = o.penalty;
-          c.bodies          = o.bodies;
-          result.push_back(c);
-        }
-      return result;
-    }
-
-
     Elasticity::DeadLoads
     Scene::dead_loads() const
     {
@@ -322,7 +235,7 @@ namespace TissueContact
         }
 
       for (const auto &b : parameters.bodies)
-        if (b.model == "rigid")
+        if (b.material.model == "rigid")
           {
             std::set<types::global_dof_index> seen;
             for (const auto &cell : disc.dof_handler.active_cell_iterators())

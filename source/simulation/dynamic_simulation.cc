@@ -20,7 +20,7 @@ namespace TissueContact
     const auto &ti     = parameters.time_integration;
     M_lumped           = Dynamics::lumped_mass(disc, bodies);
     if (!ti.lumped_mass &&
-        ti.integrator.scheme != Dynamics::Scheme::central_difference)
+        ti.scheme != Dynamics::Scheme::central_difference)
       {
         M.reinit(disc.sparsity_pattern);
         Dynamics::assemble_consistent_mass(disc, bodies, M);
@@ -63,12 +63,7 @@ namespace TissueContact
     const auto &disc = problem.discretization();
     Timer       timer;
 
-    static const char *names[] = {"implicit Euler",
-                                  "Newmark",
-                                  "central difference",
-                                  "quasistatic"};
-    const std::string  scheme =
-      ti.use_ida ? "IDA" : names[int(ti.integrator.scheme)];
+    const std::string scheme = Dynamics::scheme_name(ti.scheme);
     out << "TissueContact dynamic analysis\n"
         << "  mesh: " << problem.get_scene().triangulation.n_active_cells()
         << " tetrahedra; P" << p.degree << " elements, " << disc.n_dofs()
@@ -77,8 +72,7 @@ namespace TissueContact
         << ", end time " << ti.end_time << ", "
         << (M.empty() ? "lumped" : "consistent") << " mass "
         << M_lumped.mean_value() * M_lumped.size() / 3. << "\n";
-    if (ti.integrator.scheme == Dynamics::Scheme::central_difference &&
-        !ti.use_ida)
+    if (ti.scheme == Dynamics::Scheme::central_difference)
       {
         const double estimate =
           Dynamics::stable_time_step_estimate(disc,
@@ -92,15 +86,13 @@ namespace TissueContact
             << "\n";
       }
 
-    if (ti.use_ida)
+    if (ti.scheme == Dynamics::Scheme::ida)
       {
         run_ida();
         return;
       }
-    Dynamics::TimeIntegrator integrator(ti.integrator,
-                                        problem,
-                                        M.empty() ? nullptr : &M,
-                                        &M_lumped);
+    Dynamics::TimeIntegrator integrator(
+      ti, problem, M.empty() ? nullptr : &M, &M_lumped, p.solver);
     s.u.reinit(disc.n_dofs());
     s.v.reinit(disc.n_dofs());
     s.t = 0.;
@@ -206,7 +198,7 @@ namespace TissueContact
     AssertThrow(!M.empty(),
                 ExcMessage("Time integration: IDA needs the consistent mass "
                            "(Mass = consistent)"));
-    Dynamics::IdaIntegrator ida(ti.ida, ti.integrator, problem, M);
+    Dynamics::IdaIntegrator ida(ti.ida_data(), ti, problem, M);
     s.u.reinit(disc.n_dofs());
     s.v.reinit(disc.n_dofs());
     s.t = 0.;

@@ -21,13 +21,9 @@ namespace TissueContact
   {
     // contact only where the scene asks for it: no obstacle and no pair,
     // no contact search
-    if (!parameters.contact.obstacles.empty() ||
-        !parameters.contact.pairs.empty())
+    if (parameters.contact.enabled())
       contact =
-        std::make_unique<Contact::ContactAssembler>(disc,
-                                                    parameters.contact.surfaces,
-                                                    scene.obstacles(),
-                                                    scene.body_contacts());
+        std::make_unique<Contact::ContactAssembler>(disc, parameters.contact);
     rebuild_sparsity_pattern(u);
   }
 
@@ -163,7 +159,7 @@ namespace TissueContact
         << " prescribed\n";
     for (const auto &b : p.bodies)
       out << "  body '" << b.name << "' (material id " << int(b.id)
-          << "): " << b.model << (b.fiber ? " + fibers" : "") << "\n";
+          << "): " << b.material.model << (b.material.fiber ? " + fibers" : "") << "\n";
     out << "  linear solver: " << p.solver.linear_solver.type << "\n";
     if (contact)
       out << "  contact: " << contact->n_triangles() << " contact triangles, "

@@ -1,65 +1,85 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <sstream>
 #include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/base/parameter_tools.h>
 #include <tissue_contact/solvers/kinsol_solver.h>
 
 namespace TissueContact
 {
   namespace Solvers
   {
-    namespace
-    {
-      /** The object add_parameters() binds the declared entries to; the
-       * values are read back by name in parse(). */
-      SUNDIALS::KINSOL<Vector<double>>::AdditionalData &
-      declaration_target()
-      {
-        static SUNDIALS::KINSOL<Vector<double>>::AdditionalData data;
-        return data;
-      }
-    } // namespace
-
-
     void
-    KinsolSolver::Parameters::declare(ParameterHandler &prm)
-    {
-      prm.enter_subsection("KINSOL");
-      declaration_target().add_parameters(prm);
-      prm.leave_subsection();
-    }
-
-
-    void
-    KinsolSolver::Parameters::parse(ParameterHandler &prm)
+    KinsolSolver::Parameters::declare_parameters(ParameterHandler &prm)
     {
       using Data = SUNDIALS::KINSOL<Vector<double>>::AdditionalData;
       prm.enter_subsection("KINSOL");
-      const std::string strategy = prm.get("Solution strategy");
-      data.strategy              = strategy == "newton"     ? Data::newton :
-                                   strategy == "linesearch" ? Data::linesearch :
-                                   strategy == "fixed_point" ? Data::fixed_point :
-                                                               Data::picard;
-      data.maximum_non_linear_iterations =
-        prm.get_integer("Maximum number of nonlinear iterations");
-      data.function_tolerance =
-        prm.get_double("Function norm stopping tolerance");
-      data.step_tolerance = prm.get_double("Scaled step stopping tolerance");
+      add_selection<Data::SolutionStrategy>(
+        prm,
+        "Solution strategy",
+        data.strategy,
+        {{"newton", Data::newton},
+         {"linesearch", Data::linesearch},
+         {"fixed_point", Data::fixed_point},
+         {"picard", Data::picard}},
+        "KINSOL's method: newton (full Newton steps), linesearch (Newton "
+        "with KINSOL's backtracking line search), fixed_point or picard "
+        "(with Anderson acceleration; slow on stiff elasticity).");
+      prm.add_parameter("Maximum number of nonlinear iterations",
+                        data.maximum_non_linear_iterations,
+                        "KINSOL's iterations per load increment or time step "
+                        "before it gives up (>= 1).",
+                        Patterns::Integer(1));
+      prm.add_parameter("Function norm stopping tolerance",
+                        data.function_tolerance,
+                        "Converged when the largest residual entry on the "
+                        "free DoFs is below this (force units, >= 0); 0: "
+                        "Residual tolerance times the force scale, like "
+                        "the project's Newton.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Scaled step stopping tolerance",
+                        data.step_tolerance,
+                        "KINSOL also stops when the scaled step is below "
+                        "this (length units, >= 0; 0: KINSOL's default).",
+                        Patterns::Double(0.));
       prm.enter_subsection("Fixed point and Picard parameters");
-      data.anderson_subspace_size =
-        prm.get_integer("Anderson acceleration subspace size");
+      prm.add_parameter("Anderson acceleration subspace size",
+                        data.anderson_subspace_size,
+                        "Vectors kept by Anderson acceleration of the "
+                        "fixed_point and picard strategies (>= 0; 0: none).",
+                        Patterns::Integer(0));
       prm.leave_subsection();
       prm.enter_subsection("Linesearch parameters");
-      data.maximum_beta_failures =
-        prm.get_integer("Maximum number of beta-condition failures");
+      prm.add_parameter("Maximum number of beta-condition failures",
+                        data.maximum_beta_failures,
+                        "Line-search steps failing KINSOL's beta condition "
+                        "allowed per solve (>= 0; 0: KINSOL's default).",
+                        Patterns::Integer(0));
       prm.leave_subsection();
       prm.enter_subsection("Newton parameters");
-      data.no_init_setup = prm.get_bool("No initial matrix setup");
-      data.maximum_setup_calls =
-        prm.get_integer("Maximum iterations without matrix setup");
-      data.maximum_newton_step =
-        prm.get_double("Maximum allowable scaled length of the Newton step");
-      data.dq_relative_error =
-        prm.get_double("Relative error for different quotient computation");
+      prm.add_parameter("No initial matrix setup",
+                        data.no_init_setup,
+                        "Start from the tangent of the previous solve "
+                        "instead of assembling one (true: cheaper, may "
+                        "converge slower).",
+                        Patterns::Bool());
+      prm.add_parameter("Maximum iterations without matrix setup",
+                        data.maximum_setup_calls,
+                        "Reassemble the tangent every this many iterations "
+                        "(>= 0; 0 here means 1: a tangent per iteration, "
+                        "exact Newton).",
+                        Patterns::Integer(0));
+      prm.add_parameter("Maximum allowable scaled length of the Newton step",
+                        data.maximum_newton_step,
+                        "KINSOL shortens longer Newton steps (length units, "
+                        ">= 0; 0: KINSOL's default, 1000 times the initial "
+                        "guess's norm).",
+                        Patterns::Double(0.));
+      prm.add_parameter("Relative error for different quotient computation",
+                        data.dq_relative_error,
+                        "Used only by KINSOL's difference-quotient "
+                        "Jacobian, which the project never uses (it "
+                        "supplies the exact tangent); >= 0.",
+                        Patterns::Double(0.));
       prm.leave_subsection();
       prm.leave_subsection();
     }

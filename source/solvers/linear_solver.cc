@@ -10,38 +10,28 @@ namespace TissueContact
   namespace Solvers
   {
     void
-    LinearSolver::Parameters::declare(ParameterHandler &prm)
+    LinearSolver::Parameters::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Linear solver");
-      prm.declare_entry(
+      prm.add_parameter(
         "Type",
-        "direct",
-        Patterns::Selection("GMRES+Jacobi|direct|GMRES+AMG"),
+        type,
         "Linear solver of each Newton step: GMRES+Jacobi (inexact GMRES "
         "with diagonal preconditioning, dissertation 4.7.3), direct (sparse "
-        "LU, UMFPACK) or GMRES+AMG (Trilinos ML algebraic multigrid).");
-      prm.declare_entry("Relative tolerance",
-                        "0.1",
-                        Patterns::Double(0., 1.),
+        "LU, UMFPACK) or GMRES+AMG (Trilinos ML algebraic multigrid).",
+        Patterns::Selection("GMRES+Jacobi|direct|GMRES+AMG"));
+      prm.add_parameter("Relative tolerance",
+                        relative_tolerance,
                         "Stop the iterative solvers when the linear "
-                        "residual has fallen by this factor (0.1 = the "
-                        "inexact Newton method of the dissertation).");
-      prm.declare_entry("Maximum iterations",
-                        "1000",
-                        Patterns::Integer(1),
-                        "Iteration cap of the iterative solvers; reaching it "
-                        "is not an error, the Newton loop continues.");
-      prm.leave_subsection();
-    }
-
-
-    void
-    LinearSolver::Parameters::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Linear solver");
-      type               = prm.get("Type");
-      relative_tolerance = prm.get_double("Relative tolerance");
-      max_iterations     = prm.get_integer("Maximum iterations");
+                        "residual has fallen by this factor (0..1; 0.1 = the "
+                        "inexact Newton method of the dissertation).",
+                        Patterns::Double(0., 1.));
+      prm.add_parameter("Maximum iterations",
+                        max_iterations,
+                        "Iteration cap of the iterative solvers (>= 1); "
+                        "reaching it is not an error, the Newton loop "
+                        "continues.",
+                        Patterns::Integer(1));
       prm.leave_subsection();
     }
 

@@ -2,6 +2,7 @@
 #include <deal.II/numerics/matrix_tools.h>
 #include <sstream>
 #include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/base/parameter_tools.h>
 #include <tissue_contact/solvers/newton_solver.h>
 
 namespace TissueContact
@@ -9,132 +10,115 @@ namespace TissueContact
   namespace Solvers
   {
     void
-    IncrementalNewtonSolver::Parameters::declare(ParameterHandler &prm)
+    IncrementalNewtonSolver::Parameters::declare_parameters(
+      ParameterHandler &prm)
     {
       prm.enter_subsection("Load stepping");
-      prm.declare_entry("Initial increment",
-                        "0.25",
-                        Patterns::Double(0., 1.),
-                        "First increment of the load factor (0 -> 1).");
-      prm.declare_entry("Minimum increment",
-                        "1e-3",
-                        Patterns::Double(0., 1.),
+      prm.add_parameter("Initial increment",
+                        initial_increment,
+                        "First increment of the load factor (0 -> 1); "
+                        "0..1.",
+                        Patterns::Double(0., 1.));
+      prm.add_parameter("Minimum increment",
+                        minimum_increment,
                         "If a failed increment would be cut below this "
-                        "size, the run stops with an error.");
-      prm.declare_entry("Maximum increment",
-                        "1",
-                        Patterns::Double(0., 1.),
-                        "Upper bound of the load increment.");
-      prm.declare_entry("Growth factor",
-                        "1.5",
-                        Patterns::Double(1.),
-                        "Factor by which the increment grows after an easy "
-                        "increment.");
-      prm.declare_entry("Easy iterations",
-                        "5",
-                        Patterns::Integer(1),
+                        "size (0..1), the run stops with an error.",
+                        Patterns::Double(0., 1.));
+      prm.add_parameter("Maximum increment",
+                        maximum_increment,
+                        "Upper bound of the load increment (0..1).",
+                        Patterns::Double(0., 1.));
+      prm.add_parameter("Growth factor",
+                        growth_factor,
+                        "Factor (>= 1) by which the increment grows after an "
+                        "easy increment.",
+                        Patterns::Double(1.));
+      prm.add_parameter("Easy iterations",
+                        easy_iterations,
                         "An increment that converged within this many Newton "
-                        "iterations is easy: the next one may grow.");
-      prm.declare_entry("Predictor",
-                        "two-point",
-                        Patterns::Selection("two-point|constant"),
-                        "Initial guess of an increment: extrapolate the last "
-                        "two converged states (two-point) or start from the "
-                        "last one (constant).");
+                        "iterations (>= 1) is easy: the next one may grow.",
+                        Patterns::Integer(1));
+      add_selection<bool>(prm,
+                          "Predictor",
+                          two_point_predictor,
+                          {{"two-point", true}, {"constant", false}},
+                          "Initial guess of an increment: extrapolate the "
+                          "last two converged states (two-point) or start "
+                          "from the last one (constant).");
       prm.leave_subsection();
 
       prm.enter_subsection("Newton");
-      prm.declare_entry("Maximum iterations",
-                        "25",
-                        Patterns::Integer(1),
-                        "Newton iterations per increment before it is cut "
-                        "back.");
-      prm.declare_entry("Residual tolerance",
-                        "1e-8",
-                        Patterns::Double(0.),
+      prm.add_parameter("Maximum iterations",
+                        max_iterations,
+                        "Newton iterations per increment (>= 1) before it "
+                        "is cut back.",
+                        Patterns::Integer(1));
+      prm.add_parameter("Residual tolerance",
+                        residual_tolerance,
                         "Converged when |R| on the free DoFs is below this "
-                        "fraction of the force scale (applied loads or "
-                        "reactions, whichever is larger).");
-      prm.declare_entry("Absolute tolerance",
-                        "1e-12",
-                        Patterns::Double(0.),
+                        "fraction (>= 0) of the force scale (applied loads "
+                        "or reactions, whichever is larger).",
+                        Patterns::Double(0.));
+      prm.add_parameter("Absolute tolerance",
+                        absolute_tolerance,
                         "Converged when |R| on the free DoFs is below this "
-                        "value (for unloaded problems).");
-      prm.declare_entry("Maximum line search halvings",
-                        "20",
-                        Patterns::Integer(0),
+                        "value (force units, >= 0; for unloaded problems).",
+                        Patterns::Double(0.));
+      prm.add_parameter("Maximum line search halvings",
+                        max_halvings,
                         "LOOP 3: halve the Newton step at most this often "
-                        "looking for a step with no inverted element and a "
-                        "smaller residual.");
-      prm.declare_entry("Nonlinear solver",
-                        "Newton",
-                        Patterns::Selection("Newton|KINSOL"),
-                        "Solver of each load increment (and implicit time "
-                        "step): the project's Newton loop with line search "
-                        "and quasi-viscosity, or SUNDIALS' KINSOL (settings "
-                        "in the subsection KINSOL) with the same residual, "
-                        "tangent and linear solver.");
-      KinsolSolver::Parameters::declare(prm);
-      prm.declare_entry(
+                        "(>= 0) looking for a step with no inverted element "
+                        "and a smaller residual.",
+                        Patterns::Integer(0));
+      add_selection<bool>(
+        prm,
+        "Nonlinear solver",
+        use_kinsol,
+        {{"Newton", false}, {"KINSOL", true}},
+        "Solver of each load increment (and implicit time step): the "
+        "project's Newton loop with line search and quasi-viscosity, or "
+        "SUNDIALS' KINSOL (settings in the subsection KINSOL) with the same "
+        "residual, tangent and linear solver.");
+      kinsol.declare_parameters(prm);
+      add_selection<bool>(
+        prm,
         "Line search",
-        "residual",
-        Patterns::Selection("residual|energy"),
+        energy_line_search,
+        {{"residual", false}, {"energy", true}},
         "What a line-search step must decrease: the residual norm, or the "
         "potential energy (Armijo; contact and other nonconvex problems, "
         "falling back to the residual where the energy change is at rounding "
         "level or the step is not a descent direction).");
-      prm.declare_entry("Quasi-viscosity",
-                        "false",
-                        Patterns::Bool(),
+      prm.add_parameter("Quasi-viscosity",
+                        quasi_viscosity,
                         "Add the nodal quasi-viscosity D/dt to the tangent "
                         "(dissertation eq. 4.51): regularizes Newton near "
-                        "bifurcations; the solution is unchanged.");
-      prm.declare_entry("Viscosity factor",
-                        "0.1",
-                        Patterns::Double(0.),
+                        "bifurcations; the solution is unchanged.",
+                        Patterns::Bool());
+      prm.add_parameter("Viscosity factor",
+                        viscosity_factor,
                         "eta in D_a = eta * sum_e mu_e h_e / n_e, a fraction "
-                        "of the stiffness diagonal.");
-      prm.declare_entry("Viscosity time step",
-                        "1",
-                        Patterns::Double(1e-300),
-                        "dt of the quasi-viscosity (dissertation: 1).");
+                        "(>= 0, dimensionless) of the stiffness diagonal.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Viscosity time step",
+                        viscosity_time_step,
+                        "dt of the quasi-viscosity (> 0; in load-factor "
+                        "units, dissertation: 1).",
+                        Patterns::Double(1e-300));
       prm.leave_subsection();
 
-      LinearSolver::Parameters::declare(prm);
+      linear_solver.declare_parameters(prm);
     }
 
 
     void
-    IncrementalNewtonSolver::Parameters::parse(ParameterHandler &prm)
+    IncrementalNewtonSolver::Parameters::parse_parameters(ParameterHandler &)
     {
-      prm.enter_subsection("Load stepping");
-      initial_increment   = prm.get_double("Initial increment");
-      minimum_increment   = prm.get_double("Minimum increment");
-      maximum_increment   = prm.get_double("Maximum increment");
-      growth_factor       = prm.get_double("Growth factor");
-      easy_iterations     = prm.get_integer("Easy iterations");
-      two_point_predictor = prm.get("Predictor") == "two-point";
-      prm.leave_subsection();
       AssertThrow(minimum_increment > 0. &&
                     minimum_increment <= initial_increment &&
                     initial_increment <= maximum_increment,
                   ExcMessage("Load stepping: need 0 < Minimum increment <= "
                              "Initial increment <= Maximum increment"));
-
-      prm.enter_subsection("Newton");
-      max_iterations     = prm.get_integer("Maximum iterations");
-      residual_tolerance = prm.get_double("Residual tolerance");
-      absolute_tolerance = prm.get_double("Absolute tolerance");
-      max_halvings       = prm.get_integer("Maximum line search halvings");
-      energy_line_search = prm.get("Line search") == "energy";
-      use_kinsol         = prm.get("Nonlinear solver") == "KINSOL";
-      kinsol.parse(prm);
-      quasi_viscosity     = prm.get_bool("Quasi-viscosity");
-      viscosity_factor    = prm.get_double("Viscosity factor");
-      viscosity_time_step = prm.get_double("Viscosity time step");
-      prm.leave_subsection();
-
-      linear_solver.parse(prm);
     }
 
 

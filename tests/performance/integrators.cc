@@ -63,7 +63,7 @@ main(int argc, char **argv)
   const double end_time = 0.4, sample = 0.1;
 
   const Dynamics::TimeIntegrator::Parameters base =
-    parameters.time_integration.integrator;
+    parameters.time_integration;
   const auto stepping = [&](const std::string     &name,
                             const Dynamics::Scheme scheme,
                             const double           dt) {
@@ -74,7 +74,8 @@ main(int argc, char **argv)
       p,
       sim,
       scheme == Dynamics::Scheme::central_difference ? nullptr : &M,
-      &M_lumped);
+      &M_lumped,
+      parameters.solver);
     Dynamics::State s;
     s.u.reinit(n);
     s.v.reinit(n);

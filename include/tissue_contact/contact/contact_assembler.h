@@ -8,6 +8,7 @@
 #include <set>
 #include <tissue_contact/contact/analytic_obstacle.h>
 #include <tissue_contact/contact/bounding_volume_tree.h>
+#include <tissue_contact/contact/contact_parameters.h>
 #include <tissue_contact/contact/penalty_kernel.h>
 #include <tissue_contact/contact/point_collocation.h>
 #include <tissue_contact/base/discretization.h>
@@ -17,25 +18,6 @@ namespace TissueContact
 {
   namespace Contact
   {
-    /** A rigid obstacle, its penalty factor and the bodies (material ids;
-     * empty: all) whose contact triangles it pushes. */
-    struct ObstacleContact
-    {
-      AnalyticObstacle             obstacle;
-      double                       penalty = 1.;
-      std::set<types::material_id> bodies;
-    };
-
-    /** The contact triangles of @p surface_body against the tetrahedra of
-     * @p volume_body (the same body for self-contact), with a penalty. */
-    struct BodyContact
-    {
-      types::material_id surface_body = 0, volume_body = 0;
-      double             penalty = 1.;
-      /** The point-collocation baseline instead of area integration. */
-      bool point_collocation = false;
-    };
-
     /**
      * Adds the penalty contact forces and their exact tangent to the
      * residual and the matrix of the elastic problem. The contact
@@ -50,10 +32,10 @@ namespace TissueContact
     class ContactAssembler
     {
     public:
-      ContactAssembler(const Discretization   &disc,
-                       const std::set<types::boundary_id> &contact_surfaces,
-                       const std::vector<ObstacleContact> &obstacles,
-                       const std::vector<BodyContact>     &pairs = {});
+      /** The contact surfaces, obstacles and body pairs of @p parameters
+       * on the space @p disc. */
+      ContactAssembler(const Discretization &disc,
+                       const Parameters     &parameters);
 
       /** Add to @p dsp the DoF couplings of every (triangle, tetrahedron)
        * candidate of the body pairs at @p u whose boxes overlap after the

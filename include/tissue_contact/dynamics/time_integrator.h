@@ -1,10 +1,14 @@
 #pragma once
 
 #include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/vector.h>
+#include <deal.II/sundials/ida.h>
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 #include <tissue_contact/dynamics/damping.h>
 #include <tissue_contact/solvers/newton_solver.h>
 #include <tissue_contact/solvers/nonlinear_problem.h>
@@ -22,7 +26,17 @@ namespace TissueContact
       newmark,            ///< Newmark (default: average acceleration)
       central_difference, ///< explicit, lumped mass
       quasistatic,        ///< no inertia: C v + R(u) = 0 by backward Euler
+      ida, ///< SUNDIALS' IDA (Dynamics::IdaIntegrator), not a TimeIntegrator
     };
+
+    /** Every scheme with its prm name ("implicit Euler", "Newmark",
+     * "central difference", "quasistatic", "IDA"). */
+    const std::vector<std::pair<std::string, Scheme>> &
+    scheme_names();
+
+    /** The prm name of @p scheme. */
+    std::string
+    scheme_name(const Scheme scheme);
 
     /** Displacement, velocity and acceleration at time t. */
     struct State
@@ -44,9 +58,23 @@ namespace TissueContact
     class TimeIntegrator
     {
     public:
+      /**
+       * The prm subsection "Time integration": the analysis (static or
+       * dynamic), the scheme and its settings, the step, the end time, the
+       * damping, the mass and IDA's settings (subsection "IDA").
+       */
       struct Parameters
       {
+        /** Analysis = dynamic: integrate in time; static (false): the
+         * incremental static solve, and nothing here is used. */
+        bool   dynamic        = false;
         Scheme scheme         = Scheme::newmark;
+        /** The (largest) time step and the end time. */
+        double time_step = 0.01, end_time = 1.;
+        /** Time between outputs (0: every step). */
+        double output_interval = 0.;
+        /** The lumped (HRZ) mass instead of the consistent one. */
+        bool lumped_mass = false;
         double beta           = 0.25; ///< Newmark beta
         double gamma          = 0.5;  ///< Newmark gamma
         double rayleigh_alpha = 0., rayleigh_beta = 0.;
@@ -68,20 +96,38 @@ namespace TissueContact
          * failed one, down to minimum_step. */
         double       growth_factor   = 1.;
         unsigned int easy_iterations = 3;
-        double       maximum_step    = 1e300;
-        double       minimum_step    = 1e-12;
+        double       minimum_step    = 1e-8;
         /** The explicit scheme stops (with an error) when the energy grows
          * beyond this factor of its initial value plus the work done. */
-        double                                       blow_up_factor = 1e6;
-        Solvers::IncrementalNewtonSolver::Parameters newton;
+        double blow_up_factor = 1e6;
+        /** SUNDIALS' IDA settings (Scheme = IDA); its times are replaced
+         * by those of ida_data(). */
+        SUNDIALS::IDA<Vector<double>>::AdditionalData ida;
+
+        /** IDA's settings with the times of this section: from 0 to
+         * End time, output every Output interval (or Time step). */
+        SUNDIALS::IDA<Vector<double>>::AdditionalData
+        ida_data() const;
+
+        /** Enter "Time integration" and bind its entries to this object
+         * (IDA's through its AdditionalData::add_parameters()). */
+        void
+        declare_parameters(ParameterHandler &prm);
+        /** Check what was read. */
+        void
+        parse_parameters(ParameterHandler &prm);
       };
 
       /** @p mass_consistent or @p mass_lumped (at least one; the explicit
-       * scheme needs the lumped one). */
+       * scheme needs the lumped one). The implicit steps are solved by
+       * Newton with the settings @p newton. Steps grow at most to
+       * parameters.time_step when parameters.growth_factor > 1. */
       TimeIntegrator(const Parameters           &parameters,
                      Solvers::NonlinearProblem  &problem,
                      const SparseMatrix<double> *mass_consistent,
-                     const Vector<double>       *mass_lumped);
+                     const Vector<double>       *mass_lumped,
+                     const Solvers::IncrementalNewtonSolver::Parameters
+                       &newton = {});
 
       /** Set @p s.a from the equation of motion at @p s.u, @p s.v (the
        * acceleration the implicit schemes start from). */
@@ -91,8 +137,8 @@ namespace TissueContact
       /**
        * Advance @p s by one step of size @p dt (the implicit schemes cut
        * it back and retry from @p s while Newton fails). Returns the step
-       * actually taken; @p next_dt gets the suggested next step. Throws an
-       * ExcMessage naming the time and the reason when the step falls
+       * actually taken; @p next_dt gets the suggested next step. Throws
+       * SolveFailed naming the time and the reason when the step falls
        * below the minimum, or when the explicit scheme blows up.
        */
       double
@@ -140,10 +186,5 @@ namespace TissueContact
       void
       explicit_step(State &s, const double dt);
     };
-
-    /** Scheme from its prm name: "implicit Euler", "Newmark",
-     * "central difference". */
-    Scheme
-    scheme_from_string(const std::string &name);
   } // namespace Dynamics
 } // namespace TissueContact

@@ -5,7 +5,9 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/sundials/ida.h>
 #include <string>
+#include <tissue_contact/contact/contact_parameters.h>
 #include <tissue_contact/dynamics/time_integrator.h>
+#include <tissue_contact/materials/material_factory.h>
 #include <tissue_contact/scene/prescribed_motion.h>
 #include <tissue_contact/solvers/newton_solver.h>
 #include <vector>
@@ -26,32 +28,32 @@ namespace TissueContact
       double                    distortion = 0.;
       double                    scale      = 1.;
 
-      static void
-      declare(ParameterHandler &prm);
+      /** Bind the entries of this section to this object. */
       void
-      parse(ParameterHandler &prm, const std::string &prm_directory);
+      declare_parameters(ParameterHandler &prm);
+      /** Check what was read; relative paths are taken relative to
+       * @p prm_directory. */
+      void
+      parse_parameters(ParameterHandler &prm, const std::string &prm_directory);
     };
 
     /** prm subsection "Bodies/Body N": one body (a material id) and its
      * material, density, optional fibers, or its rigid motion. */
     struct BodyParameters
     {
-      std::string        name    = "body";
-      types::material_id id      = 0;
-      std::string        model   = "neo-Hookean";
-      double             density = 1.;
-      double             mu = 1., lambda = 1.;
-      double             C1 = 1., C2 = 0., a = 1.;
-      double             alpha = 1., beta = 1.;
-      bool               fiber       = false;
-      double             fiber_alpha = 0., fiber_beta = 1.;
-      std::string        fiber_direction = "1; 0; 0";
-      PrescribedMotion   rigid_motion;
+      std::string                   name    = "body";
+      types::material_id            id      = 0;
+      double                        density = 1.;
+      Materials::MaterialParameters material;
+      PrescribedMotion              rigid_motion;
 
-      static void
-      declare(ParameterHandler &prm);
+      /** Bind the entries of the current subsection to this object (the
+       * material's to @p material). */
       void
-      parse(ParameterHandler &prm);
+      declare_parameters(ParameterHandler &prm);
+      /** Check what was read. */
+      void
+      parse_parameters(ParameterHandler &prm);
     };
 
     /** prm subsection "Boundary conditions/Dirichlet N": a prescribed
@@ -63,10 +65,12 @@ namespace TissueContact
       std::string        components  = "xyz";
       PrescribedMotion   motion;
 
-      static void
-      declare(ParameterHandler &prm);
+      /** Bind the entries of the current subsection to this object. */
       void
-      parse(ParameterHandler &prm);
+      declare_parameters(ParameterHandler &prm);
+      /** Check what was read. */
+      void
+      parse_parameters(ParameterHandler &prm);
     };
 
     /** prm subsection "Boundary conditions/Traction N": a dead reference
@@ -76,72 +80,9 @@ namespace TissueContact
       types::boundary_id boundary_id = 0;
       Tensor<1, 3>       traction;
 
-      static void
-      declare(ParameterHandler &prm);
+      /** Bind the entries of the current subsection to this object. */
       void
-      parse(ParameterHandler &prm);
-    };
-
-    /** prm subsection "Contact/Obstacle N": a rigid plane or sphere. */
-    struct ObstacleParameters
-    {
-      std::string                  type = "plane";
-      Point<3>                     point;
-      Tensor<1, 3>                 normal{{0., 0., 1.}};
-      Point<3>                     center;
-      double                       radius  = 1.;
-      double                       penalty = 1e3;
-      std::set<types::material_id> bodies;
-
-      static void
-      declare(ParameterHandler &prm);
-      void
-      parse(ParameterHandler &prm);
-    };
-
-    /** prm subsection "Contact/Pair N": the contact triangles of one body
-     * against the tetrahedra of another (or the same: self-contact). */
-    struct ContactPairParameters
-    {
-      types::material_id surface_body = 0, volume_body = 0;
-      double             penalty           = 1e3;
-      bool               point_collocation = false;
-
-      static void
-      declare(ParameterHandler &prm);
-      void
-      parse(ParameterHandler &prm);
-    };
-
-    /** prm subsection "Contact": which boundary ids are contact surfaces,
-     * the body pairs and the obstacles. */
-    struct ContactParameters
-    {
-      std::set<types::boundary_id>       surfaces;
-      std::vector<ContactPairParameters> pairs;
-      std::vector<ObstacleParameters>    obstacles;
-    };
-
-    /** prm subsection "Time integration": static (default) or dynamic
-     * analysis, and the time integrator's settings. */
-    struct TimeIntegrationParameters
-    {
-      bool                                 dynamic = false;
-      Dynamics::TimeIntegrator::Parameters integrator;
-      double                               time_step       = 0.01;
-      double                               end_time        = 1.;
-      double                               output_interval = 0.;
-      bool                                 lumped_mass     = false;
-      /** Scheme = IDA: SUNDIALS' IDA with these settings (subsection
-       * "Time integration/IDA"; its times come from End time and Output
-       * interval). */
-      bool                                          use_ida = false;
-      SUNDIALS::IDA<Vector<double>>::AdditionalData ida;
-
-      static void
-      declare(ParameterHandler &prm);
-      void
-      parse(ParameterHandler &prm);
+      declare_parameters(ParameterHandler &prm);
     };
 
     /** prm subsection "Output". */
@@ -152,10 +93,9 @@ namespace TissueContact
       bool        write_vtu    = true;
       bool        print_timing = true;
 
-      static void
-      declare(ParameterHandler &prm);
+      /** Enter "Output" and bind its entries to this object. */
       void
-      parse(ParameterHandler &prm, const std::string &prm_directory);
+      declare_parameters(ParameterHandler &prm);
     };
 
     /**
@@ -172,19 +112,35 @@ namespace TissueContact
       std::vector<DirichletParameters>             dirichlet;
       std::vector<TractionParameters>              tractions;
       Tensor<1, 3>                                 gravity;
-      ContactParameters                            contact;
+      Contact::Parameters                          contact;
       Solvers::IncrementalNewtonSolver::Parameters solver;
-      TimeIntegrationParameters                    time_integration;
+      Dynamics::TimeIntegrator::Parameters         time_integration;
       OutputParameters                             output;
 
-      /** Declare everything, with the given numbers of subsections. */
+      /** Numbers of bodies, Dirichlet conditions and tractions (entries of
+       * the prm; the vectors above hold as many). */
+      unsigned int n_bodies = 1, n_dirichlet = 1, n_tractions = 0;
+
+      SceneParameters();
+
+      /** Make room for the given numbers of subsections. */
+      void
+      resize(const unsigned int n_bodies,
+             const unsigned int n_dirichlet,
+             const unsigned int n_tractions,
+             const unsigned int n_obstacles,
+             const unsigned int n_pairs);
+
+      /** Declare every entry: the scene's own sections and the modules'
+       * (contact, solvers, time integration), with as many subsections as
+       * the vectors hold; the modules' entries are bound to this object. */
+      void
+      declare_parameters(ParameterHandler &prm);
+
+      /** The parameter reference: every entry, with one subsection of each
+       * kind, as `tissue-contact --print-parameters` prints it. */
       static void
-      declare(ParameterHandler  &prm,
-              const unsigned int n_bodies    = 1,
-              const unsigned int n_dirichlet = 1,
-              const unsigned int n_tractions = 1,
-              const unsigned int n_obstacles = 1,
-              const unsigned int n_pairs     = 1);
+      print_reference(std::ostream &out);
 
       /** Read a prm file. Relative paths in it are taken relative to the
        * file's folder. */
@@ -200,12 +156,12 @@ namespace TissueContact
       parse_text(const std::string &text,
                  const std::string &name,
                  const std::string &directory);
+      /** Read the scene's own sections and check the modules' after
+       * ParameterHandler::parse_input(). */
       void
-      parse(ParameterHandler &prm, const std::string &prm_directory);
+      parse_parameters(ParameterHandler  &prm,
+                       const std::string &prm_directory);
     };
 
-    /** Parse "a, b, c" into a tensor; throws naming @p entry otherwise. */
-    Tensor<1, 3>
-    parse_vector(const std::string &text, const std::string &entry);
   } // namespace Scene
 } // namespace TissueContact

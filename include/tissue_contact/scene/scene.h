@@ -2,7 +2,6 @@
 
 #include <deal.II/grid/tria.h>
 #include <memory>
-#include <tissue_contact/contact/contact_assembler.h>
 #include <tissue_contact/base/discretization.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/materials/material.h>
@@ -42,14 +41,6 @@ namespace TissueContact
       std::map<types::material_id, Elasticity::BodyData>
       body_data() const;
 
-      /** The body pairs of the Contact subsection. */
-      std::vector<Contact::BodyContact>
-      body_contacts() const;
-
-      /** The rigid obstacles of the Contact subsection. */
-      std::vector<Contact::ObstacleContact>
-      obstacles() const;
-
       /** Gravity and tractions at load factor 1. */
       Elasticity::DeadLoads
       dead_loads() const;
@@ -67,9 +58,5 @@ namespace TissueContact
       void
       check_mesh() const;
     };
-
-    /** The material of a body (null for Model = rigid). */
-    std::unique_ptr<Materials::Material>
-    create_material(const BodyParameters &body);
   } // namespace Scene
 } // namespace TissueContact

@@ -26,16 +26,23 @@ namespace TissueContact
     class KinsolSolver
     {
     public:
-      /** Entries of the prm subsection "Newton/KINSOL": deal.II's
-       * SUNDIALS::KINSOL::AdditionalData::add_parameters(). */
+      /** Entries of the prm subsection "Newton/KINSOL": the settings of
+       * SUNDIALS::KINSOL::AdditionalData the project uses, documented. */
       struct Parameters
       {
         SUNDIALS::KINSOL<Vector<double>>::AdditionalData data;
 
-        static void
-        declare(ParameterHandler &prm);
+        /** KINSOL's defaults, but plain Newton steps (the project's
+         * tangent is exact). */
+        Parameters()
+        {
+          data.strategy =
+            SUNDIALS::KINSOL<Vector<double>>::AdditionalData::newton;
+        }
+
+        /** Enter "KINSOL" and bind its entries to @p data. */
         void
-        parse(ParameterHandler &prm);
+        declare_parameters(ParameterHandler &prm);
       };
 
       KinsolSolver(const Parameters               &parameters,

@@ -34,10 +34,9 @@ namespace TissueContact
         double       relative_tolerance = 0.1;
         unsigned int max_iterations     = 1000;
 
-        static void
-        declare(ParameterHandler &prm);
+        /** Enter "Linear solver" and bind its entries to this object. */
         void
-        parse(ParameterHandler &prm);
+        declare_parameters(ParameterHandler &prm);
       };
 
       /** @p constant_modes: per component, which DoFs belong to it (for

@@ -58,10 +58,13 @@ namespace TissueContact
 
         LinearSolver::Parameters linear_solver;
 
-        static void
-        declare(ParameterHandler &prm);
+        /** Bind the entries of "Load stepping", "Newton" (with its
+         * subsection "KINSOL") and "Linear solver" to this object. */
         void
-        parse(ParameterHandler &prm);
+        declare_parameters(ParameterHandler &prm);
+        /** Check what was read. */
+        void
+        parse_parameters(ParameterHandler &prm);
       };
 
       explicit IncrementalNewtonSolver(const Parameters &parameters);

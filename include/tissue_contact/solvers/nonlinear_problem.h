@@ -68,7 +68,6 @@ namespace TissueContact
       virtual Vector<double>
       quasi_viscosity_diagonal(const double eta) const = 0;
 
-      /** Per component, the DoFs of that component (AMG near-null space). */
       /** The potential energy whose gradient assemble() computes, for the
        * energy line search; NaN (the default) if the problem has none. */
       virtual double
@@ -79,6 +78,14 @@ namespace TissueContact
         return std::numeric_limits<double>::quiet_NaN();
       }
 
+      /**
+       * The near-null space handed to the algebraic multigrid
+       * preconditioner (LinearSolver with Type = GMRES+AMG, Trilinos ML's
+       * "constant modes"): one mask per displacement component c with
+       * entry i true where DoF i is the c-component of a node, i.e. the
+       * three rigid translations. Empty (the default): AMG uses one
+       * constant mode over all DoFs. Rotations are not included.
+       */
       virtual std::vector<std::vector<bool>>
       constant_modes() const
       {

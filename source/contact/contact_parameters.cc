@@ -1,0 +1,150 @@
+#include <deal.II/base/exceptions.h>
+
+#include <tissue_contact/base/parameter_tools.h>
+#include <tissue_contact/contact/contact_parameters.h>
+
+namespace TissueContact
+{
+  namespace Contact
+  {
+    void
+    ObstacleContact::declare_parameters(ParameterHandler &prm)
+    {
+      add_selection<AnalyticObstacle::Type>(
+        prm,
+        "Type",
+        obstacle.type,
+        {{"plane", AnalyticObstacle::Type::plane},
+         {"sphere", AnalyticObstacle::Type::sphere}},
+        "A rigid plane (the bodies stay on the side its Normal points to) "
+        "or sphere (the bodies stay outside).");
+      prm.add_parameter("Point",
+                        obstacle.point,
+                        "A point of the plane, in length units" +
+                          vector_pattern_doc,
+                        vector_pattern());
+      prm.add_parameter("Normal",
+                        obstacle.normal,
+                        "Normal of the plane, pointing out of the obstacle; "
+                        "any nonzero length (normalized when read)" +
+                          vector_pattern_doc,
+                        vector_pattern());
+      prm.add_parameter("Center",
+                        obstacle.center,
+                        "Center of the sphere, in length units" +
+                          vector_pattern_doc,
+                        vector_pattern());
+      prm.add_parameter("Radius",
+                        obstacle.radius,
+                        "Radius of the sphere, in length units; >= 0.",
+                        Patterns::Double(0.));
+      prm.add_parameter(
+        "Penalty factor",
+        penalty,
+        "eps_p in W = eps_p/2 int d^2 da over the penetrating part of each "
+        "contact triangle (d: penetration depth); the penetration falls as "
+        "1/eps_p. Units: stress per length (consistent units); >= 0.",
+        Patterns::Double(0.));
+      prm.add_parameter("Bodies",
+                        bodies,
+                        "Material ids (0..255) of the bodies the obstacle "
+                        "pushes (empty: all bodies with contact surfaces).",
+                        Patterns::List(Patterns::Integer(0, 255)));
+    }
+
+
+    void
+    ObstacleContact::parse_parameters(ParameterHandler &)
+    {
+      AssertThrow(obstacle.normal.norm() > 0.,
+                  ExcMessage("Obstacle: the Normal must not be zero"));
+      obstacle.normal /= obstacle.normal.norm();
+    }
+
+
+    void
+    BodyContact::declare_parameters(ParameterHandler &prm)
+    {
+      prm.add_parameter("Surface body",
+                        surface_body,
+                        "Material id (0..255) of the body whose contact "
+                        "triangles are pushed out of the other body.",
+                        Patterns::Integer(0, 255));
+      prm.add_parameter("Volume body",
+                        volume_body,
+                        "Material id (0..255) of the body whose tetrahedra "
+                        "and material depth push; equal to Surface body for "
+                        "self-contact. Declare both directions for two "
+                        "bodies.",
+                        Patterns::Integer(0, 255));
+      prm.add_parameter(
+        "Penalty factor",
+        penalty,
+        "eps_p in W = eps_p/2 int g^2 da over every triangle-tetrahedron "
+        "intersection (g: the material depth of the volume body). Units: "
+        "stress per length (consistent units); >= 0.",
+        Patterns::Double(0.));
+      add_selection<bool>(
+        prm,
+        "Method",
+        point_collocation,
+        {{"area integration", false}, {"point collocation", true}},
+        "area integration: the penalty integrated exactly over every "
+        "triangle-tetrahedron intersection (continuous forces); point "
+        "collocation: sampled at the triangle vertices only (dissertation "
+        "5.3.5, the baseline that chatters).");
+    }
+
+
+    void
+    Parameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
+      prm.add_parameter("Contact surfaces",
+                        surfaces,
+                        "Boundary ids (0..255) whose faces are contact "
+                        "surfaces (a cut plane with a Dirichlet condition is "
+                        "not). Empty: no contact, and no contact search at "
+                        "all.",
+                        Patterns::List(Patterns::Integer(0, 255)));
+      // the counts' defaults (the file sets them; the subsections declared
+      // below are as many as the vectors hold)
+      n_obstacles = 0;
+      n_pairs     = 0;
+      prm.add_parameter("Number of obstacles",
+                        n_obstacles,
+                        "How many subsections 'Obstacle 0', ... follow "
+                        "(0..64).",
+                        Patterns::Integer(0, 64));
+      prm.add_parameter("Number of pairs",
+                        n_pairs,
+                        "How many subsections 'Pair 0', ... follow (0..64).",
+                        Patterns::Integer(0, 64));
+      for (unsigned int i = 0; i < obstacles.size(); ++i)
+        {
+          prm.enter_subsection("Obstacle " + std::to_string(i));
+          obstacles[i].declare_parameters(prm);
+          prm.leave_subsection();
+        }
+      for (unsigned int i = 0; i < pairs.size(); ++i)
+        {
+          prm.enter_subsection("Pair " + std::to_string(i));
+          pairs[i].declare_parameters(prm);
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+    }
+
+
+    void
+    Parameters::parse_parameters(ParameterHandler &prm)
+    {
+      for (auto &o : obstacles)
+        o.parse_parameters(prm);
+      AssertThrow(!enabled() || !surfaces.empty(),
+                  ExcMessage("Contact: obstacles or pairs are declared but no "
+                             "Contact surfaces; list the boundary ids that "
+                             "can touch"));
+    }
+  } // namespace Contact
+} // namespace TissueContact

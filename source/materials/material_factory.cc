@@ -1,0 +1,139 @@
+#include <deal.II/base/function_parser.h>
+
+#include <tissue_contact/materials/fiber_reinforcement.h>
+#include <tissue_contact/materials/linear_elastic.h>
+#include <tissue_contact/materials/material_factory.h>
+#include <tissue_contact/materials/mooney_rivlin.h>
+#include <tissue_contact/materials/neo_hookean.h>
+#include <tissue_contact/materials/saint_venant_kirchhoff.h>
+#include <tissue_contact/materials/veronda.h>
+
+namespace TissueContact
+{
+  namespace Materials
+  {
+    void
+    MaterialParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.add_parameter(
+        "Model",
+        model,
+        "Material model (doc/theory/03-materials.md). neo-Hookean, Saint "
+        "Venant-Kirchhoff, linear: Mu, Lambda. Mooney-Rivlin: C1, C2, a. "
+        "Veronda: Alpha, Beta, a. rigid: the body follows 'Rigid motion'.",
+        Patterns::Selection("neo-Hookean|Mooney-Rivlin|Veronda|"
+                            "Saint Venant-Kirchhoff|linear|rigid"));
+      prm.add_parameter("Mu",
+                        mu,
+                        "Lame shear modulus mu (stress units) of the "
+                        "neo-Hookean, Saint Venant-Kirchhoff and linear "
+                        "models; > 0 for a stable material.",
+                        Patterns::Double());
+      prm.add_parameter("Lambda",
+                        lambda,
+                        "Lame constant lambda (stress units) of the same "
+                        "models; bulk modulus lambda + 2 mu / 3 > 0.",
+                        Patterns::Double());
+      prm.add_parameter("C1",
+                        C1,
+                        "Mooney-Rivlin C1 (stress units) in W = C1 (I1 - 3) "
+                        "+ C2 (I2 - 3) + ...; small-strain shear modulus "
+                        "2 (C1 + C2) > 0.",
+                        Patterns::Double());
+      prm.add_parameter("C2",
+                        C2,
+                        "Mooney-Rivlin C2 (stress units); 0 gives a "
+                        "neo-Hookean-like model.",
+                        Patterns::Double());
+      prm.add_parameter("a",
+                        a,
+                        "Compressibility a (stress units) of Mooney-Rivlin "
+                        "and Veronda, in their volume terms a (I3 - 1) - k ln "
+                        "I3 (doc/theory/03-materials.md sec. 3.3); larger is "
+                        "less compressible.",
+                        Patterns::Double());
+      prm.add_parameter("Alpha",
+                        alpha,
+                        "Veronda alpha (stress units) in W = alpha (exp(beta "
+                        "(I1 - 3)) - 1) - alpha beta / 2 (I2 - 3) + ...; "
+                        "small-strain shear modulus alpha beta.",
+                        Patterns::Double());
+      prm.add_parameter("Beta",
+                        beta,
+                        "Veronda beta (dimensionless), the exponential "
+                        "stiffening rate.",
+                        Patterns::Double());
+      prm.enter_subsection("Fiber");
+      prm.add_parameter("Enabled",
+                        fiber,
+                        "Add fiber reinforcement to the ground material "
+                        "(not for linear and rigid).",
+                        Patterns::Bool());
+      prm.add_parameter("Alpha",
+                        fiber_alpha,
+                        "Fiber alpha (stress units), the scale of the fiber "
+                        "energy (doc/theory/03-materials.md).",
+                        Patterns::Double());
+      prm.add_parameter("Beta",
+                        fiber_beta,
+                        "Fiber beta (dimensionless), the fiber's "
+                        "exponential stiffening rate.",
+                        Patterns::Double());
+      prm.add_parameter("Direction",
+                        fiber_direction,
+                        "Fiber direction in the reference configuration: "
+                        "three expressions in x, y, z separated by ';' "
+                        "(normalized where evaluated).",
+                        Patterns::Anything());
+      prm.leave_subsection();
+    }
+
+
+    std::unique_ptr<Material>
+    create_material(const MaterialParameters &b)
+    {
+      if (b.model == "rigid")
+        return nullptr;
+      if (b.model == "linear")
+        {
+          AssertThrow(!b.fiber,
+                      ExcMessage("fibers cannot be added to the linear "
+                                 "model; use a hyperelastic one"));
+          return std::make_unique<LinearElastic>(b.mu, b.lambda);
+        }
+      std::unique_ptr<HyperelasticMaterial> ground;
+      if (b.model == "neo-Hookean")
+        ground = std::make_unique<NeoHookean>(b.mu, b.lambda);
+      else if (b.model == "Mooney-Rivlin")
+        ground = std::make_unique<MooneyRivlin>(b.C1, b.C2, b.a);
+      else if (b.model == "Veronda")
+        ground = std::make_unique<Veronda>(b.alpha, b.beta, b.a);
+      else if (b.model == "Saint Venant-Kirchhoff")
+        ground = std::make_unique<SaintVenantKirchhoff>(b.mu, b.lambda);
+      else
+        AssertThrow(false,
+                    ExcMessage("unknown material model '" + b.model + "'"));
+      if (!b.fiber)
+        return ground;
+      auto direction = std::make_shared<FunctionParser<3>>(3);
+      try
+        {
+          direction->initialize("x,y,z",
+                                b.fiber_direction,
+                                std::map<std::string, double>());
+        }
+      catch (...)
+        {
+          AssertThrow(false,
+                      ExcMessage("cannot parse the fiber Direction '" +
+                                 b.fiber_direction +
+                                 "': give three expressions in x, y, z "
+                                 "separated by ';'"));
+        }
+      return std::make_unique<FiberReinforcement>(std::move(ground),
+                                                  b.fiber_alpha,
+                                                  b.fiber_beta,
+                                                  direction);
+    }
+  } // namespace Materials
+} // namespace TissueContact
