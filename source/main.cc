@@ -4,12 +4,14 @@
 //   tissue-contact scene.prm           a scene file (see prm/)
 //   tissue-contact --print-parameters  every parameter, documented
 
-#include <deal.II/base/mpi.h>
-#include <deal.II/base/parameter_handler.h>
-#include <iostream>
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/simulation/dynamic_simulation.h>
 #include <tissue_contact/simulation/static_simulation.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <iostream>
 
 namespace
 {

@@ -4,10 +4,11 @@
 // every test writes to deallog, which initlog() sends to the file "output"
 // that numdiff compares against <name>.output).
 
-#include <cmath>
 #include <deal.II/base/logstream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/tensor.h>
+
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <random>

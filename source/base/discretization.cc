@@ -1,6 +1,7 @@
+#include <tissue_contact/base/discretization.h>
+
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <tissue_contact/base/discretization.h>
 
 namespace TissueContact
 {

@@ -1,6 +1,8 @@
-#include <deal.II/base/exceptions.h>
-#include <sstream>
 #include <tissue_contact/base/exceptions.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <sstream>
 
 namespace TissueContact
 {

@@ -1,7 +1,8 @@
+#include <tissue_contact/contact/bounding_volume_tree.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <tissue_contact/contact/bounding_volume_tree.h>
 
 namespace TissueContact
 {

@@ -1,25 +1,26 @@
-#include <algorithm>
-#include <cmath>
-#include <deal.II/base/multithread_info.h>
-#include <deal.II/base/work_stream.h>
-#include <map>
-#include <numeric>
 #include <tissue_contact/contact/contact_assembler.h>
 #include <tissue_contact/contact/material_depth.h>
+
+#include <deal.II/base/multithread_info.h>
+#include <deal.II/base/work_stream.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
 
 namespace TissueContact
 {
   namespace Contact
   {
-    ContactAssembler::ContactAssembler(
-      const Discretization   &disc,
-      const Parameters     &parameters)
+    ContactAssembler::ContactAssembler(const Discretization &disc,
+                                       const Parameters     &parameters)
       : obstacles(parameters.obstacles)
       , pairs(parameters.pairs)
     {
       const auto &contact_surfaces = parameters.surfaces;
-      const auto &tria = disc.dof_handler.get_triangulation();
-      X                = tria.get_vertices();
+      const auto &tria             = disc.dof_handler.get_triangulation();
+      X                            = tria.get_vertices();
       vertex_dofs.resize(X.size());
       for (const auto &cell : disc.dof_handler.active_cell_iterators())
         {
@@ -324,8 +325,7 @@ namespace TissueContact
         unsigned int        n = 0;
       };
       struct Scratch
-      {
-      };
+      {};
       WorkStream::run(
         surface_triangles.cbegin(),
         surface_triangles.cend(),

@@ -1,7 +1,7 @@
-#include <deal.II/base/exceptions.h>
-
 #include <tissue_contact/base/parameter_tools.h>
 #include <tissue_contact/contact/contact_parameters.h>
+
+#include <deal.II/base/exceptions.h>
 
 namespace TissueContact
 {

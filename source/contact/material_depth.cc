@@ -1,9 +1,11 @@
-#include <array>
-#include <deal.II/base/bounding_box.h>
-#include <limits>
-#include <map>
 #include <tissue_contact/contact/bounding_volume_tree.h>
 #include <tissue_contact/contact/material_depth.h>
+
+#include <deal.II/base/bounding_box.h>
+
+#include <array>
+#include <limits>
+#include <map>
 
 namespace TissueContact
 {

@@ -1,5 +1,6 @@
-#include <deal.II/differentiation/ad.h>
 #include <tissue_contact/contact/penalty_energy.h>
+
+#include <deal.II/differentiation/ad.h>
 
 namespace TissueContact
 {

@@ -1,9 +1,11 @@
-#include <cmath>
-#include <deal.II/base/index_set.h>
-#include <deal.II/numerics/matrix_tools.h>
-#include <limits>
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/dynamics/ida_integrator.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/numerics/matrix_tools.h>
+
+#include <cmath>
+#include <limits>
 
 namespace TissueContact
 {
@@ -18,8 +20,7 @@ namespace TissueContact
       , parameters(parameters)
       , problem(problem)
       , M(mass)
-    {
-    }
+    {}
 
 
     unsigned int

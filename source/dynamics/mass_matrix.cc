@@ -1,6 +1,8 @@
-#include <deal.II/fe/fe_values.h>
-#include <limits>
 #include <tissue_contact/dynamics/mass_matrix.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <limits>
 
 namespace TissueContact
 {
@@ -13,7 +15,7 @@ namespace TissueContact
       template <typename F>
       void
       for_each_cell_mass(
-        const Discretization                         &disc,
+        const Discretization                                     &disc,
         const std::map<types::material_id, Elasticity::BodyData> &bodies,
         const F                                                  &f)
       {
@@ -51,7 +53,7 @@ namespace TissueContact
 
     void
     assemble_consistent_mass(
-      const Discretization                         &disc,
+      const Discretization                                     &disc,
       const std::map<types::material_id, Elasticity::BodyData> &bodies,
       SparseMatrix<double>                                     &M)
     {
@@ -68,7 +70,7 @@ namespace TissueContact
 
     Vector<double>
     lumped_mass(
-      const Discretization                         &disc,
+      const Discretization                                     &disc,
       const std::map<types::material_id, Elasticity::BodyData> &bodies)
     {
       Vector<double> m_lumped(disc.n_dofs());
@@ -103,7 +105,7 @@ namespace TissueContact
 
     double
     stable_time_step_estimate(
-      const Discretization                         &disc,
+      const Discretization                                     &disc,
       const std::map<types::material_id, Elasticity::BodyData> &bodies)
     {
       double dt = std::numeric_limits<double>::infinity();

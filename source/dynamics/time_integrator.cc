@@ -1,10 +1,12 @@
-#include <deal.II/base/exceptions.h>
-#include <deal.II/numerics/matrix_tools.h>
-#include <limits>
-#include <sstream>
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/base/parameter_tools.h>
 #include <tissue_contact/dynamics/time_integrator.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/numerics/matrix_tools.h>
+
+#include <limits>
+#include <sstream>
 
 // Symbols follow doc/theory/06-dynamics.md.
 
@@ -237,8 +239,9 @@ namespace TissueContact
        * most undocumented, and declares times and initial-condition
        * corrections that the project sets itself: ida_data()). */
       void
-      declare_ida_parameters(ParameterHandler                              &prm,
-                             SUNDIALS::IDA<Vector<double>>::AdditionalData &data)
+      declare_ida_parameters(
+        ParameterHandler                              &prm,
+        SUNDIALS::IDA<Vector<double>>::AdditionalData &data)
       {
         prm.enter_subsection("IDA");
         prm.enter_subsection("Running parameters");
@@ -416,12 +419,12 @@ namespace TissueContact
     }
 
 
-    TimeIntegrator::TimeIntegrator(const Parameters           &parameters,
-                                   Solvers::NonlinearProblem  &problem,
-                                   const SparseMatrix<double> *mass_consistent,
-                                   const Vector<double>       *mass_lumped,
-                                   const Solvers::IncrementalNewtonSolver::Parameters
-                                     &newton_parameters)
+    TimeIntegrator::TimeIntegrator(
+      const Parameters                                   &parameters,
+      Solvers::NonlinearProblem                          &problem,
+      const SparseMatrix<double>                         *mass_consistent,
+      const Vector<double>                               *mass_lumped,
+      const Solvers::IncrementalNewtonSolver::Parameters &newton_parameters)
       : parameters(parameters)
       , problem(problem)
       , M(mass_consistent)

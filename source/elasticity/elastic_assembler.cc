@@ -1,11 +1,13 @@
-#include <algorithm>
-#include <array>
+#include <tissue_contact/elasticity/elastic_assembler.h>
+
 #include <deal.II/base/work_stream.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
+
+#include <algorithm>
+#include <array>
 #include <limits>
 #include <numeric>
-#include <tissue_contact/elasticity/elastic_assembler.h>
 
 namespace TissueContact
 {

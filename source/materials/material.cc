@@ -1,5 +1,6 @@
-#include <deal.II/base/exceptions.h>
 #include <tissue_contact/materials/material.h>
+
+#include <deal.II/base/exceptions.h>
 
 namespace TissueContact
 {

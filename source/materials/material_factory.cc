@@ -1,5 +1,3 @@
-#include <deal.II/base/function_parser.h>
-
 #include <tissue_contact/materials/fiber_reinforcement.h>
 #include <tissue_contact/materials/linear_elastic.h>
 #include <tissue_contact/materials/material_factory.h>
@@ -7,6 +5,8 @@
 #include <tissue_contact/materials/neo_hookean.h>
 #include <tissue_contact/materials/saint_venant_kirchhoff.h>
 #include <tissue_contact/materials/veronda.h>
+
+#include <deal.II/base/function_parser.h>
 
 namespace TissueContact
 {

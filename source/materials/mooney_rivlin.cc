@@ -1,6 +1,8 @@
-#include <cmath>
-#include <deal.II/base/exceptions.h>
 #include <tissue_contact/materials/mooney_rivlin.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <cmath>
 
 namespace TissueContact
 {

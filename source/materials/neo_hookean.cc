@@ -1,5 +1,6 @@
-#include <cmath>
 #include <tissue_contact/materials/neo_hookean.h>
+
+#include <cmath>
 
 namespace TissueContact
 {

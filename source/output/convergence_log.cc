@@ -1,6 +1,8 @@
-#include <deal.II/base/exceptions.h>
-#include <iomanip>
 #include <tissue_contact/output/convergence_log.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <iomanip>
 
 namespace TissueContact
 {

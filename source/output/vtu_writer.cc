@@ -1,10 +1,12 @@
+#include <tissue_contact/output/vtu_writer.h>
+
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/numerics/data_out.h>
+
 #include <fstream>
 #include <iomanip>
 #include <sstream>
-#include <tissue_contact/output/vtu_writer.h>
 
 namespace TissueContact
 {
@@ -14,8 +16,7 @@ namespace TissueContact
                                      const std::string &base_name)
       : directory(directory)
       , base_name(base_name)
-    {
-    }
+    {}
 
 
     std::string
@@ -26,7 +27,7 @@ namespace TissueContact
 
 
     std::string
-    VtuSeriesWriter::write(const Discretization   &disc,
+    VtuSeriesWriter::write(const Discretization               &disc,
                            const Elasticity::ElasticAssembler &assembler,
                            const Vector<double>               &u,
                            const double                        time,

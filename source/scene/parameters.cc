@@ -1,8 +1,10 @@
-#include <deal.II/base/utilities.h>
-#include <fstream>
-#include <sstream>
 #include <tissue_contact/base/parameter_tools.h>
 #include <tissue_contact/scene/parameters.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <fstream>
+#include <sstream>
 
 namespace TissueContact
 {
@@ -110,8 +112,7 @@ namespace TissueContact
 
 
     void
-    MeshParameters::parse_parameters(ParameterHandler &,
-                                     const std::string &dir)
+    MeshParameters::parse_parameters(ParameterHandler &, const std::string &dir)
     {
       if (source == "file")
         {

@@ -1,5 +1,6 @@
-#include <deal.II/physics/transformations.h>
 #include <tissue_contact/scene/prescribed_motion.h>
+
+#include <deal.II/physics/transformations.h>
 
 namespace TissueContact
 {

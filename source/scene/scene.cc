@@ -1,13 +1,15 @@
+#include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/materials/material_factory.h>
+#include <tissue_contact/scene/scene.h>
+
 #include <deal.II/base/function_parser.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
+
 #include <fstream>
 #include <set>
 #include <sstream>
-#include <tissue_contact/base/exceptions.h>
-#include <tissue_contact/materials/material_factory.h>
-#include <tissue_contact/scene/scene.h>
 
 namespace TissueContact
 {

@@ -1,12 +1,14 @@
-#include <deal.II/base/timer.h>
-#include <filesystem>
-#include <fstream>
-#include <iomanip>
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/dynamics/ida_integrator.h>
 #include <tissue_contact/dynamics/mass_matrix.h>
 #include <tissue_contact/output/vtu_writer.h>
 #include <tissue_contact/simulation/dynamic_simulation.h>
+
+#include <deal.II/base/timer.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
 
 namespace TissueContact
 {
@@ -19,8 +21,7 @@ namespace TissueContact
     const auto  bodies = problem.get_scene().body_data();
     const auto &ti     = parameters.time_integration;
     M_lumped           = Dynamics::lumped_mass(disc, bodies);
-    if (!ti.lumped_mass &&
-        ti.scheme != Dynamics::Scheme::central_difference)
+    if (!ti.lumped_mass && ti.scheme != Dynamics::Scheme::central_difference)
       {
         M.reinit(disc.sparsity_pattern);
         Dynamics::assemble_consistent_mass(disc, bodies, M);

@@ -1,12 +1,14 @@
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/grid/grid_tools.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <filesystem>
-#include <numeric>
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/output/convergence_log.h>
 #include <tissue_contact/output/vtu_writer.h>
 #include <tissue_contact/simulation/static_simulation.h>
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <filesystem>
+#include <numeric>
 
 namespace TissueContact
 {
@@ -159,7 +161,8 @@ namespace TissueContact
         << " prescribed\n";
     for (const auto &b : p.bodies)
       out << "  body '" << b.name << "' (material id " << int(b.id)
-          << "): " << b.material.model << (b.material.fiber ? " + fibers" : "") << "\n";
+          << "): " << b.material.model << (b.material.fiber ? " + fibers" : "")
+          << "\n";
     out << "  linear solver: " << p.solver.linear_solver.type << "\n";
     if (contact)
       out << "  contact: " << contact->n_triangles() << " contact triangles, "
@@ -179,10 +182,8 @@ namespace TissueContact
     };
 
     Solvers::IncrementalNewtonSolver solver(p.solver);
-    solver.on_iteration = [&](const IterationInfo &i) {
-      log.iteration(i);
-    };
-    solver.on_cutback = [&](const double lambda, const std::string &why) {
+    solver.on_iteration = [&](const IterationInfo &i) { log.iteration(i); };
+    solver.on_cutback   = [&](const double lambda, const std::string &why) {
       log.cutback(lambda, why);
     };
     solver.on_increment =

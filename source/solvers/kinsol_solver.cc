@@ -1,8 +1,10 @@
-#include <deal.II/lac/sparse_matrix.h>
-#include <sstream>
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/base/parameter_tools.h>
 #include <tissue_contact/solvers/kinsol_solver.h>
+
+#include <deal.II/lac/sparse_matrix.h>
+
+#include <sstream>
 
 namespace TissueContact
 {
@@ -89,8 +91,7 @@ namespace TissueContact
                                const LinearSolver::Parameters &linear_solver)
       : parameters(parameters)
       , linear_solver(linear_solver)
-    {
-    }
+    {}
 
 
     void

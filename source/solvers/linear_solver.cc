@@ -1,9 +1,10 @@
+#include <tissue_contact/solvers/linear_solver.h>
+
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/trilinos_precondition.h>
-#include <tissue_contact/solvers/linear_solver.h>
 
 namespace TissueContact
 {

@@ -1,9 +1,11 @@
-#include <cmath>
-#include <deal.II/numerics/matrix_tools.h>
-#include <sstream>
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/base/parameter_tools.h>
 #include <tissue_contact/solvers/newton_solver.h>
+
+#include <deal.II/numerics/matrix_tools.h>
+
+#include <cmath>
+#include <sstream>
 
 namespace TissueContact
 {
@@ -125,8 +127,7 @@ namespace TissueContact
     IncrementalNewtonSolver::IncrementalNewtonSolver(
       const Parameters &parameters)
       : parameters(parameters)
-    {
-    }
+    {}
 
 
     void

@@ -9,8 +9,9 @@
 
 #include "../tests.h"
 
-#include <sstream>
 #include <tissue_contact/simulation/static_simulation.h>
+
+#include <sstream>
 
 using namespace dealii;
 using namespace TissueContact;

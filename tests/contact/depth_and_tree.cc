@@ -12,12 +12,14 @@
 
 #include "../tests.h"
 
+#include <tissue_contact/contact/bounding_volume_tree.h>
+#include <tissue_contact/contact/material_depth.h>
+
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
+
 #include <set>
-#include <tissue_contact/contact/bounding_volume_tree.h>
-#include <tissue_contact/contact/material_depth.h>
 
 using namespace dealii;
 using namespace TissueContact;

@@ -17,9 +17,10 @@
 
 #include "../tests.h"
 
+#include <tissue_contact/simulation/static_simulation.h>
+
 #include <fstream>
 #include <sstream>
-#include <tissue_contact/simulation/static_simulation.h>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -73,17 +74,16 @@ main(int argc, char **argv)
         std::string  outcome;
         try
           {
-            const auto stats =
-              sim.solve_quietly([&](const IterationInfo &i) {
-                csv << eps << ',' << method << ',' << total++ << ','
-                    << i.increment << ',' << i.load_factor << ',' << i.iteration
-                    << ',' << i.residual_norm << '\n';
-                if (i.iteration > 0 && i.residual_norm > previous)
-                  ++growths;
-                if (i.step_length == 0.)
-                  last_converged = i.load_factor;
-                previous = i.residual_norm;
-              });
+            const auto stats = sim.solve_quietly([&](const IterationInfo &i) {
+              csv << eps << ',' << method << ',' << total++ << ','
+                  << i.increment << ',' << i.load_factor << ',' << i.iteration
+                  << ',' << i.residual_norm << '\n';
+              if (i.iteration > 0 && i.residual_norm > previous)
+                ++growths;
+              if (i.step_length == 0.)
+                last_converged = i.load_factor;
+              previous = i.residual_norm;
+            });
             std::ostringstream o;
             o << "converged, " << stats.increments << " increments, "
               << stats.cutbacks << " cut back";

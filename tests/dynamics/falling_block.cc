@@ -16,10 +16,11 @@
 #include "../tests.h"
 #include "scenes.h"
 
-#include <sstream>
 #include <tissue_contact/dynamics/mass_matrix.h>
 #include <tissue_contact/dynamics/time_integrator.h>
 #include <tissue_contact/simulation/static_simulation.h>
+
+#include <sstream>
 
 using namespace dealii;
 using namespace TissueContact;

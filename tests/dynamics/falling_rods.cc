@@ -19,10 +19,11 @@
 #include "../tests.h"
 #include "scenes.h"
 
+#include <tissue_contact/simulation/dynamic_simulation.h>
+
 #include <fstream>
 #include <map>
 #include <sstream>
-#include <tissue_contact/simulation/dynamic_simulation.h>
 
 using namespace dealii;
 using namespace TissueContact;

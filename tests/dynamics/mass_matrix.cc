@@ -9,8 +9,9 @@
 
 #include "../tests.h"
 
-#include <deal.II/grid/grid_generator.h>
 #include <tissue_contact/dynamics/mass_matrix.h>
+
+#include <deal.II/grid/grid_generator.h>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -32,8 +33,8 @@ main()
 
   for (const unsigned int degree : {1u, 2u})
     {
-      Discretization disc(tria, degree);
-      SparseMatrix<double>       M(disc.sparsity_pattern);
+      Discretization       disc(tria, degree);
+      SparseMatrix<double> M(disc.sparsity_pattern);
       Dynamics::assemble_consistent_mass(disc, bodies, M);
       const Vector<double> lumped    = Dynamics::lumped_mass(disc, bodies);
       const auto           component = disc.dof_components();

@@ -22,13 +22,15 @@
 #include "../tests.h"
 #include "scenes.h"
 
-#include <deal.II/lac/sparse_direct.h>
-#include <deal.II/numerics/matrix_tools.h>
-#include <sstream>
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/dynamics/mass_matrix.h>
 #include <tissue_contact/dynamics/time_integrator.h>
 #include <tissue_contact/simulation/static_simulation.h>
+
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/numerics/matrix_tools.h>
+
+#include <sstream>
 
 using namespace dealii;
 using namespace TissueContact;

@@ -7,9 +7,10 @@
 
 #include "../tests.h"
 
-#include <sstream>
 #include <tissue_contact/simulation/dynamic_simulation.h>
 #include <tissue_contact/simulation/static_simulation.h>
+
+#include <sstream>
 
 using namespace dealii;
 using namespace TissueContact;

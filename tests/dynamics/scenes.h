@@ -3,11 +3,13 @@
 // frequency (power iteration on M_L^-1 K).
 #pragma once
 
-#include <deal.II/lac/sparse_direct.h>
-#include <deal.II/numerics/matrix_tools.h>
-#include <sstream>
 #include <tissue_contact/dynamics/mass_matrix.h>
 #include <tissue_contact/simulation/static_simulation.h>
+
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/numerics/matrix_tools.h>
+
+#include <sstream>
 
 namespace DynamicsTestScenes
 {

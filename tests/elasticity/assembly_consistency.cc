@@ -6,13 +6,14 @@
 
 #include "../tests.h"
 
-#include <deal.II/base/function_parser.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_tools.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/materials/fiber_reinforcement.h>
 #include <tissue_contact/materials/mooney_rivlin.h>
 #include <tissue_contact/materials/veronda.h>
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -42,8 +43,8 @@ check(const unsigned int degree)
     std::make_unique<Materials::MooneyRivlin>(5., 1., 50.), 2., 3., fiber);
   const Materials::Veronda m1(7., 8., 100.);
 
-  const Discretization disc(tria, degree);
-  Elasticity::DeadLoads            loads;
+  const Discretization  disc(tria, degree);
+  Elasticity::DeadLoads loads;
   loads.gravity      = Tensor<1, 3>({0., 0., -2.});
   loads.tractions[1] = Tensor<1, 3>({0.5, 0.3, -1.});
   const Elasticity::ElasticAssembler assembler(disc,

@@ -7,15 +7,16 @@
 
 #include "../tests.h"
 
-#include <deal.II/base/function_parser.h>
-#include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/lapack_full_matrix.h>
 #include <tissue_contact/materials/fiber_reinforcement.h>
 #include <tissue_contact/materials/linear_elastic.h>
 #include <tissue_contact/materials/mooney_rivlin.h>
 #include <tissue_contact/materials/neo_hookean.h>
 #include <tissue_contact/materials/saint_venant_kirchhoff.h>
 #include <tissue_contact/materials/veronda.h>
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 
 using namespace dealii;
 using namespace TissueContact::Materials;

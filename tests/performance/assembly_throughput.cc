@@ -6,15 +6,6 @@
 //   cmake --build build --target performance
 //   build/tests/performance/assembly_throughput [--quick]
 
-#include <deal.II/base/function_parser.h>
-#include <deal.II/base/multithread_info.h>
-#include <deal.II/base/timer.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/numerics/matrix_tools.h>
-#include <iomanip>
-#include <iostream>
-#include <memory>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/materials/fiber_reinforcement.h>
 #include <tissue_contact/materials/linear_elastic.h>
@@ -23,6 +14,17 @@
 #include <tissue_contact/materials/saint_venant_kirchhoff.h>
 #include <tissue_contact/materials/veronda.h>
 #include <tissue_contact/solvers/linear_solver.h>
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/multithread_info.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/numerics/matrix_tools.h>
+
+#include <iomanip>
+#include <iostream>
+#include <memory>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -62,7 +64,7 @@ namespace
   // Seconds per residual + tangent assembly (best of a few repetitions).
   double
   time_assembly(const Elasticity::ElasticAssembler &assembler,
-                const Discretization   &disc,
+                const Discretization               &disc,
                 const Vector<double>               &u)
   {
     Vector<double>       R(disc.n_dofs());
@@ -109,7 +111,7 @@ main(int argc, char **argv)
           GridGenerator::subdivided_hyper_rectangle_with_simplices(
             tria, {n, n, n}, Point<3>(0, 0, 0), Point<3>(1, 1, 1));
           const Discretization disc(tria, degree);
-          const Vector<double>             u = some_displacement(disc);
+          const Vector<double> u = some_displacement(disc);
           for (const auto &m : materials)
             {
               const Elasticity::ElasticAssembler assembler(
@@ -146,8 +148,8 @@ main(int argc, char **argv)
       Triangulation<3> tria;
       GridGenerator::subdivided_hyper_rectangle_with_simplices(
         tria, {n, n, n}, Point<3>(0, 0, 0), Point<3>(1, 1, 1));
-      const Discretization disc(tria, degree);
-      Elasticity::DeadLoads            loads;
+      const Discretization  disc(tria, degree);
+      Elasticity::DeadLoads loads;
       loads.gravity = Tensor<1, 3>({0., 0., -1.});
       const Elasticity::ElasticAssembler        assembler(disc,
                                                    {{0, {&mr, 1.}}},

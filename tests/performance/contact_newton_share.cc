@@ -11,14 +11,16 @@
 // Needs gmsh on the PATH (the meshes are generated from
 // meshes/stacked_blocks.geo into the system's temporary folder).
 
+#include <tissue_contact/simulation/static_simulation.h>
+
 #include <deal.II/base/timer.h>
 #include <deal.II/numerics/matrix_tools.h>
+
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
-#include <tissue_contact/simulation/static_simulation.h>
 
 using namespace dealii;
 using namespace TissueContact;

@@ -9,15 +9,17 @@
 //   cmake --build build --target performance
 //   build/tests/performance/contact_throughput
 
-#include <deal.II/base/timer.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_tools.h>
-#include <iomanip>
-#include <iostream>
 #include <tissue_contact/contact/bounding_volume_tree.h>
 #include <tissue_contact/contact/material_depth.h>
 #include <tissue_contact/contact/penalty_energy.h>
 #include <tissue_contact/contact/penalty_kernel.h>
+
+#include <deal.II/base/timer.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <iomanip>
+#include <iostream>
 
 using namespace dealii;
 using namespace TissueContact;

@@ -14,13 +14,15 @@
 #include "dynamics/scenes.h"
 #include "tests.h"
 
+#include <tissue_contact/dynamics/ida_integrator.h>
+#include <tissue_contact/dynamics/time_integrator.h>
+
 #include <deal.II/base/timer.h>
+
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <limits>
-#include <tissue_contact/dynamics/ida_integrator.h>
-#include <tissue_contact/dynamics/time_integrator.h>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -62,8 +64,7 @@ main(int argc, char **argv)
   };
   const double end_time = 0.4, sample = 0.1;
 
-  const Dynamics::TimeIntegrator::Parameters base =
-    parameters.time_integration;
+  const Dynamics::TimeIntegrator::Parameters base = parameters.time_integration;
   const auto stepping = [&](const std::string     &name,
                             const Dynamics::Scheme scheme,
                             const double           dt) {

@@ -6,10 +6,11 @@
 
 #include "../tests.h"
 
-#include <fstream>
-#include <sstream>
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/simulation/static_simulation.h>
+
+#include <fstream>
+#include <sstream>
 
 using namespace dealii;
 using namespace TissueContact;

@@ -5,11 +5,12 @@
 
 #include "../tests.h"
 
+#include <tissue_contact/scene/parameters.h>
+
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
 
 #include <sstream>
-#include <tissue_contact/scene/parameters.h>
 
 using namespace dealii;
 using namespace TissueContact;

@@ -6,9 +6,10 @@
 
 #include "../tests.h"
 
+#include <tissue_contact/simulation/static_simulation.h>
+
 #include <fstream>
 #include <sstream>
-#include <tissue_contact/simulation/static_simulation.h>
 
 using namespace dealii;
 using namespace TissueContact;

@@ -14,13 +14,15 @@
 
 #include "../tests.h"
 
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_tools.h>
-#include <sstream>
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/materials/mooney_rivlin.h>
 #include <tissue_contact/simulation/static_simulation.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <sstream>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -33,7 +35,7 @@ namespace
   class PatchProblem : public Solvers::NonlinearProblem
   {
   public:
-    PatchProblem(const Discretization   &disc,
+    PatchProblem(const Discretization               &disc,
                  const Elasticity::ElasticAssembler &assembler,
                  const Tensor<2, 3>                 &H)
       : disc(disc)
@@ -100,7 +102,7 @@ namespace
     }
 
   private:
-    const Discretization           &disc;
+    const Discretization                       &disc;
     const Elasticity::ElasticAssembler         &assembler;
     const Tensor<2, 3>                          H;
     const std::vector<Point<3>>                 X;
@@ -117,7 +119,7 @@ namespace
                                                              Point<3>(1, 1, 1));
     GridTools::distort_random(0.25, tria, true, 3);
     const Materials::MooneyRivlin      material(5., 1., 50.);
-    const Discretization   disc(tria, degree);
+    const Discretization               disc(tria, degree);
     const Elasticity::ElasticAssembler assembler(disc,
                                                  {{0, {&material, 1.}}},
                                                  Elasticity::DeadLoads());

@@ -31,11 +31,11 @@ namespace TissueContact
    */
   template <typename T>
   void
-  add_selection(ParameterHandler                           &prm,
-                const std::string                          &entry,
-                T                                          &value,
+  add_selection(ParameterHandler                             &prm,
+                const std::string                            &entry,
+                T                                            &value,
                 const std::vector<std::pair<std::string, T>> &options,
-                const std::string                          &documentation)
+                const std::string                            &documentation)
   {
     std::string names, default_name;
     for (const auto &o : options)

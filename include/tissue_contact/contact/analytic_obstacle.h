@@ -1,8 +1,10 @@
 #pragma once
 
-#include <cmath>
-#include <deal.II/base/point.h>
 #include <tissue_contact/contact/penalty_energy.h>
+
+#include <deal.II/base/point.h>
+
+#include <cmath>
 
 namespace TissueContact
 {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deal.II/base/bounding_box.h>
+
 #include <functional>
 #include <vector>
 

@@ -1,17 +1,19 @@
 #pragma once
 
-#include <array>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/vector.h>
-#include <memory>
-#include <set>
+#include <tissue_contact/base/discretization.h>
 #include <tissue_contact/contact/analytic_obstacle.h>
 #include <tissue_contact/contact/bounding_volume_tree.h>
 #include <tissue_contact/contact/contact_parameters.h>
 #include <tissue_contact/contact/penalty_kernel.h>
 #include <tissue_contact/contact/point_collocation.h>
-#include <tissue_contact/base/discretization.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <array>
+#include <memory>
+#include <set>
 #include <vector>
 
 namespace TissueContact

@@ -1,12 +1,12 @@
 #pragma once
 
+#include <tissue_contact/contact/analytic_obstacle.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
 #include <set>
 #include <vector>
-
-#include <tissue_contact/contact/analytic_obstacle.h>
 
 namespace TissueContact
 {

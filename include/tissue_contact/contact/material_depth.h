@@ -2,6 +2,7 @@
 
 #include <deal.II/base/point.h>
 #include <deal.II/grid/tria.h>
+
 #include <set>
 #include <vector>
 

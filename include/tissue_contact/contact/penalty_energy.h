@@ -1,12 +1,14 @@
 #pragma once
 
+#include <tissue_contact/contact/triangle_tetrahedron_intersection.h>
+
 #include <deal.II/differentiation/ad/ad_number_traits.h>
 #include <deal.II/differentiation/ad/sacado_number_types.h>
 #include <deal.II/differentiation/ad/sacado_product_types.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
+
 #include <functional>
-#include <tissue_contact/contact/triangle_tetrahedron_intersection.h>
 #include <vector>
 
 namespace TissueContact

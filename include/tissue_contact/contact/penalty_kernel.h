@@ -1,7 +1,8 @@
 #pragma once
 
-#include <array>
 #include <tissue_contact/contact/triangle_tetrahedron_intersection.h>
+
+#include <array>
 
 namespace TissueContact
 {

@@ -1,9 +1,10 @@
 #pragma once
 
-#include <algorithm>
-#include <array>
 #include <deal.II/base/point.h>
 #include <deal.II/differentiation/ad/ad_number_traits.h>
+
+#include <algorithm>
+#include <array>
 
 namespace TissueContact
 {

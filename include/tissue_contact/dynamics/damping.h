@@ -1,9 +1,10 @@
 #pragma once
 
+#include <tissue_contact/solvers/nonlinear_problem.h>
+
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
-#include <tissue_contact/solvers/nonlinear_problem.h>
 
 namespace TissueContact
 {

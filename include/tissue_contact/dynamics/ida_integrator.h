@@ -1,12 +1,14 @@
 #pragma once
 
+#include <tissue_contact/dynamics/time_integrator.h>
+#include <tissue_contact/solvers/nonlinear_problem.h>
+
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/sundials/ida.h>
+
 #include <functional>
-#include <tissue_contact/dynamics/time_integrator.h>
-#include <tissue_contact/solvers/nonlinear_problem.h>
 
 namespace TissueContact
 {

@@ -1,10 +1,12 @@
 #pragma once
 
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/vector.h>
-#include <map>
 #include <tissue_contact/base/discretization.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <map>
 
 namespace TissueContact
 {
@@ -22,7 +24,7 @@ namespace TissueContact
      */
     void
     assemble_consistent_mass(
-      const Discretization                         &disc,
+      const Discretization                                     &disc,
       const std::map<types::material_id, Elasticity::BodyData> &bodies,
       SparseMatrix<double>                                     &M);
 
@@ -35,7 +37,7 @@ namespace TissueContact
      */
     Vector<double>
     lumped_mass(
-      const Discretization                         &disc,
+      const Discretization                                     &disc,
       const std::map<types::material_id, Elasticity::BodyData> &bodies);
 
     /**
@@ -49,7 +51,7 @@ namespace TissueContact
      */
     double
     stable_time_step_estimate(
-      const Discretization                         &disc,
+      const Discretization                                     &disc,
       const std::map<types::material_id, Elasticity::BodyData> &bodies);
   } // namespace Dynamics
 } // namespace TissueContact

@@ -1,17 +1,19 @@
 #pragma once
 
-#include <deal.II/lac/sparse_matrix.h>
+#include <tissue_contact/dynamics/damping.h>
+#include <tissue_contact/solvers/newton_solver.h>
+#include <tissue_contact/solvers/nonlinear_problem.h>
+
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/sundials/ida.h>
+
 #include <functional>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
-#include <tissue_contact/dynamics/damping.h>
-#include <tissue_contact/solvers/newton_solver.h>
-#include <tissue_contact/solvers/nonlinear_problem.h>
 
 namespace TissueContact
 {
@@ -67,14 +69,14 @@ namespace TissueContact
       {
         /** Analysis = dynamic: integrate in time; static (false): the
          * incremental static solve, and nothing here is used. */
-        bool   dynamic        = false;
-        Scheme scheme         = Scheme::newmark;
+        bool   dynamic = false;
+        Scheme scheme  = Scheme::newmark;
         /** The (largest) time step and the end time. */
         double time_step = 0.01, end_time = 1.;
         /** Time between outputs (0: every step). */
         double output_interval = 0.;
         /** The lumped (HRZ) mass instead of the consistent one. */
-        bool lumped_mass = false;
+        bool   lumped_mass    = false;
         double beta           = 0.25; ///< Newmark beta
         double gamma          = 0.5;  ///< Newmark gamma
         double rayleigh_alpha = 0., rayleigh_beta = 0.;
@@ -122,12 +124,12 @@ namespace TissueContact
        * scheme needs the lumped one). The implicit steps are solved by
        * Newton with the settings @p newton. Steps grow at most to
        * parameters.time_step when parameters.growth_factor > 1. */
-      TimeIntegrator(const Parameters           &parameters,
-                     Solvers::NonlinearProblem  &problem,
-                     const SparseMatrix<double> *mass_consistent,
-                     const Vector<double>       *mass_lumped,
-                     const Solvers::IncrementalNewtonSolver::Parameters
-                       &newton = {});
+      TimeIntegrator(
+        const Parameters                                   &parameters,
+        Solvers::NonlinearProblem                          &problem,
+        const SparseMatrix<double>                         *mass_consistent,
+        const Vector<double>                               *mass_lumped,
+        const Solvers::IncrementalNewtonSolver::Parameters &newton = {});
 
       /** Set @p s.a from the equation of motion at @p s.u, @p s.v (the
        * acceleration the implicit schemes start from). */

@@ -1,13 +1,15 @@
 #pragma once
 
-#include <array>
-#include <deal.II/base/tensor.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/vector.h>
-#include <map>
 #include <tissue_contact/base/discretization.h>
 #include <tissue_contact/materials/hyperelastic_material.h>
 #include <tissue_contact/materials/material.h>
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <array>
+#include <map>
 
 namespace TissueContact
 {

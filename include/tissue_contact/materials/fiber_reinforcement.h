@@ -1,8 +1,10 @@
 #pragma once
 
-#include <deal.II/base/function.h>
-#include <memory>
 #include <tissue_contact/materials/hyperelastic_material.h>
+
+#include <deal.II/base/function.h>
+
+#include <memory>
 
 namespace TissueContact
 {

@@ -1,11 +1,11 @@
 #pragma once
 
+#include <tissue_contact/materials/material.h>
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <memory>
 #include <string>
-
-#include <tissue_contact/materials/material.h>
 
 namespace TissueContact
 {

@@ -1,9 +1,10 @@
 #pragma once
 
+#include <tissue_contact/base/solve_statistics.h>
+
 #include <fstream>
 #include <ostream>
 #include <string>
-#include <tissue_contact/base/solve_statistics.h>
 
 namespace TissueContact
 {

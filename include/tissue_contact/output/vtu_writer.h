@@ -1,9 +1,11 @@
 #pragma once
 
-#include <deal.II/lac/vector.h>
-#include <string>
 #include <tissue_contact/base/discretization.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -31,7 +33,7 @@ namespace TissueContact
       /** Write the state @p u at load factor (or time) @p time; returns the
        * file name written. */
       std::string
-      write(const Discretization   &disc,
+      write(const Discretization               &disc,
             const Elasticity::ElasticAssembler &assembler,
             const Vector<double>               &u,
             const double                        time,

@@ -1,15 +1,17 @@
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/point.h>
-#include <deal.II/base/tensor.h>
-#include <deal.II/sundials/ida.h>
-#include <string>
 #include <tissue_contact/contact/contact_parameters.h>
 #include <tissue_contact/dynamics/time_integrator.h>
 #include <tissue_contact/materials/material_factory.h>
 #include <tissue_contact/scene/prescribed_motion.h>
 #include <tissue_contact/solvers/newton_solver.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/sundials/ida.h>
+
+#include <string>
 #include <vector>
 
 namespace TissueContact
@@ -159,8 +161,7 @@ namespace TissueContact
       /** Read the scene's own sections and check the modules' after
        * ParameterHandler::parse_input(). */
       void
-      parse_parameters(ParameterHandler  &prm,
-                       const std::string &prm_directory);
+      parse_parameters(ParameterHandler &prm, const std::string &prm_directory);
     };
 
   } // namespace Scene

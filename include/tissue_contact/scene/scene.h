@@ -1,11 +1,13 @@
 #pragma once
 
-#include <deal.II/grid/tria.h>
-#include <memory>
 #include <tissue_contact/base/discretization.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/materials/material.h>
 #include <tissue_contact/scene/parameters.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <memory>
 #include <vector>
 
 namespace TissueContact

@@ -1,11 +1,12 @@
 #pragma once
 
+#include <tissue_contact/dynamics/time_integrator.h>
+#include <tissue_contact/simulation/static_simulation.h>
+
 #include <fstream>
 #include <functional>
 #include <ostream>
 #include <string>
-#include <tissue_contact/dynamics/time_integrator.h>
-#include <tissue_contact/simulation/static_simulation.h>
 #include <vector>
 
 namespace TissueContact

@@ -1,13 +1,15 @@
 #pragma once
 
-#include <deal.II/base/timer.h>
-#include <memory>
-#include <ostream>
-#include <tissue_contact/contact/contact_assembler.h>
 #include <tissue_contact/base/discretization.h>
+#include <tissue_contact/contact/contact_assembler.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/scene/scene.h>
 #include <tissue_contact/solvers/newton_solver.h>
+
+#include <deal.II/base/timer.h>
+
+#include <memory>
+#include <ostream>
 
 namespace TissueContact
 {
@@ -36,8 +38,8 @@ namespace TissueContact
      * given, sees every Newton iteration. On failure the exception
      * propagates and solution() holds the last converged increment. */
     SolveStatistics
-    solve_quietly(const std::function<void(const IterationInfo &)>
-                    &on_iteration = {});
+    solve_quietly(
+      const std::function<void(const IterationInfo &)> &on_iteration = {});
 
     const Vector<double> &
     solution() const
@@ -114,7 +116,7 @@ namespace TissueContact
     rebuild_sparsity_pattern(const Vector<double> &u);
 
     Scene::Scene                               scene;
-    Discretization                 disc;
+    Discretization                             disc;
     Elasticity::ElasticAssembler               assembler;
     std::unique_ptr<Contact::ContactAssembler> contact;
     /** The run's timer while run() is active: contact assembly is timed as

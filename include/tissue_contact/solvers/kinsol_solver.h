@@ -1,11 +1,13 @@
 #pragma once
 
+#include <tissue_contact/solvers/linear_solver.h>
+#include <tissue_contact/solvers/nonlinear_problem.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/sundials/kinsol.h>
+
 #include <string>
-#include <tissue_contact/solvers/linear_solver.h>
-#include <tissue_contact/solvers/nonlinear_problem.h>
 
 namespace TissueContact
 {

@@ -1,13 +1,15 @@
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/timer.h>
-#include <functional>
-#include <string>
 #include <tissue_contact/base/solve_statistics.h>
 #include <tissue_contact/solvers/kinsol_solver.h>
 #include <tissue_contact/solvers/linear_solver.h>
 #include <tissue_contact/solvers/nonlinear_problem.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <functional>
+#include <string>
 
 namespace TissueContact
 {
