@@ -539,7 +539,7 @@ namespace TissueContact
       SolveStatistics statistics;
       try
         {
-          newton.solve_at(effective, u, lambda, 0, statistics);
+          newton.solve_at(effective, u, lambda, 0, statistics, timer);
         }
       catch (const SolveFailed &e)
         {
@@ -572,7 +572,13 @@ namespace TissueContact
       for (const auto &t : prescribed)
         s.u[t.first] = t.second;
       Vector<double> R(n), Cv;
-      const bool     valid = problem.assemble(s.u, lambda, R, nullptr);
+      bool           valid;
+      {
+        std::unique_ptr<TimerOutput::Scope> scope;
+        if (timer != nullptr)
+          scope = std::make_unique<TimerOutput::Scope>(*timer, "assembly");
+        valid = problem.assemble(s.u, lambda, R, nullptr);
+      }
       damping_operator.vmult(Cv, v_half);
       s.a = 0.;
       for (types::global_dof_index i = 0; i < n; ++i)

@@ -15,10 +15,10 @@ namespace TissueContact
   DynamicSimulation::DynamicSimulation(const Scene::SceneParameters &parameters,
                                        std::ostream                 &out)
     : out(out)
-    , problem(parameters, out)
+    , nonlinear_problem(parameters)
   {
-    const auto &disc   = problem.discretization();
-    const auto  bodies = problem.get_scene().body_data();
+    const auto &disc   = nonlinear_problem.discretization();
+    const auto  bodies = nonlinear_problem.get_scene().body_data();
     const auto &ti     = parameters.time_integration;
     M_lumped           = Dynamics::lumped_mass(disc, bodies);
     if (!ti.lumped_mass && ti.scheme != Dynamics::Scheme::central_difference)
@@ -33,7 +33,7 @@ namespace TissueContact
   DynamicSimulation::open_time_history(const std::string &columns,
                                        std::string       &name) const
   {
-    const auto &o = problem.get_scene().parameters.output;
+    const auto &o = nonlinear_problem.get_scene().parameters.output;
     std::filesystem::create_directories(o.directory);
     name = o.directory + "/" + o.base_name + "-time.csv";
     std::ofstream csv(name);
@@ -45,11 +45,7 @@ namespace TissueContact
   const std::vector<double> *
   DynamicSimulation::depth_field() const
   {
-    const auto *contact = problem.contact_assembler();
-    return contact != nullptr &&
-               !problem.get_scene().parameters.contact.pairs.empty() ?
-             &contact->vertex_depth() :
-             nullptr;
+    return nonlinear_problem.depth_field();
   }
 
 
@@ -59,14 +55,15 @@ namespace TissueContact
                              const Dynamics::State &,
                              const Dynamics::State &)> &on_step)
   {
-    const auto &p    = problem.get_scene().parameters;
+    const auto &p    = nonlinear_problem.get_scene().parameters;
     const auto &ti   = p.time_integration;
-    const auto &disc = problem.discretization();
+    const auto &disc = nonlinear_problem.discretization();
     Timer       timer;
 
     const std::string scheme = Dynamics::scheme_name(ti.scheme);
     out << "TissueContact dynamic analysis\n"
-        << "  mesh: " << problem.get_scene().triangulation.n_active_cells()
+        << "  mesh: "
+        << nonlinear_problem.get_scene().triangulation.n_active_cells()
         << " tetrahedra; P" << p.degree << " elements, " << disc.n_dofs()
         << " unknowns\n"
         << "  scheme: " << scheme << ", time step " << ti.time_step
@@ -75,9 +72,8 @@ namespace TissueContact
         << M_lumped.mean_value() * M_lumped.size() / 3. << "\n";
     if (ti.scheme == Dynamics::Scheme::central_difference)
       {
-        const double estimate =
-          Dynamics::stable_time_step_estimate(disc,
-                                              problem.get_scene().body_data());
+        const double estimate = Dynamics::stable_time_step_estimate(
+          disc, nonlinear_problem.get_scene().body_data());
         out << "  stable step estimate (smallest altitude / wave speed): "
             << estimate << " (keep the step below 0.9 of it)"
             << (ti.time_step > 0.9 * estimate ?
@@ -93,11 +89,18 @@ namespace TissueContact
         return;
       }
     Dynamics::TimeIntegrator integrator(
-      ti, problem, M.empty() ? nullptr : &M, &M_lumped, p.solver);
+      ti, nonlinear_problem, M.empty() ? nullptr : &M, &M_lumped, p.solver);
     s.u.reinit(disc.n_dofs());
     s.v.reinit(disc.n_dofs());
     s.t = 0.;
     integrator.initialize(s);
+    // the time spent, by section, printed at the end like the static run's
+    TimerOutput timer_output(out,
+                             p.output.print_timing ? TimerOutput::summary :
+                                                     TimerOutput::never,
+                             TimerOutput::wall_times);
+    integrator.set_timer(&timer_output);
+    nonlinear_problem.set_timer(&timer_output);
 
     // one column per contact interaction: pairs as contact_<surface body>_
     // <volume body>, obstacles as obstacle_<index>
@@ -114,7 +117,7 @@ namespace TissueContact
     Output::VtuSeriesWriter vtu(p.output.directory, p.output.base_name);
     const auto              depth = depth_field();
     if (p.output.write_vtu)
-      vtu.write(disc, problem.elastic_assembler(), s.u, s.t, depth);
+      vtu.write(disc, nonlinear_problem.elastic_assembler(), s.u, s.t, depth);
 
     out << "  step     time         dt           Newton  kinetic energy\n";
     unsigned int   step = 0, cutbacks = 0, iterations = 0;
@@ -136,9 +139,9 @@ namespace TissueContact
             const double        kinetic = integrator.kinetic_energy(s);
             std::vector<double> contact_energies;
             const double        energy =
-              kinetic + problem.energy(s.u,
-                                       integrator.load_factor(s.t),
-                                       contact_energies);
+              kinetic + nonlinear_problem.energy(s.u,
+                                                 integrator.load_factor(s.t),
+                                                 contact_energies);
             // the damping's work over the step at the mid-step velocity
             // (exact for the average-acceleration Newmark scheme)
             v_mid = before.v;
@@ -162,19 +165,23 @@ namespace TissueContact
             if (p.output.write_vtu && (s.t >= next_output * (1. - 1e-12) ||
                                        s.t >= ti.end_time * (1. - 1e-12)))
               {
-                vtu.write(disc, problem.elastic_assembler(), s.u, s.t, depth);
+                TimerOutput::Scope scope(timer_output, "output");
+                vtu.write(
+                  disc, nonlinear_problem.elastic_assembler(), s.u, s.t, depth);
                 next_output = s.t + ti.output_interval;
               }
           }
       }
     catch (const std::exception &e)
       {
+        nonlinear_problem.set_timer(nullptr);
         const std::string kept =
           p.output.write_vtu ? "; the steps up to t = " + std::to_string(s.t) +
                                  " are kept in " + vtu.pvd_file() :
                                "";
         AssertThrow(false, ExcMessage(error_message(e) + kept));
       }
+    nonlinear_problem.set_timer(nullptr);
     out << "Reached t = " << s.t << " in " << step << " steps (" << cutbacks
         << " cut back), " << iterations << " Newton iterations"
         << (p.output.print_timing ?
@@ -193,13 +200,13 @@ namespace TissueContact
   void
   DynamicSimulation::run_ida()
   {
-    const auto &p    = problem.get_scene().parameters;
+    const auto &p    = nonlinear_problem.get_scene().parameters;
     const auto &ti   = p.time_integration;
-    const auto &disc = problem.discretization();
+    const auto &disc = nonlinear_problem.discretization();
     AssertThrow(!M.empty(),
                 ExcMessage("Time integration: IDA needs the consistent mass "
                            "(Mass = consistent)"));
-    Dynamics::IdaIntegrator ida(ti.ida_data(), ti, problem, M);
+    Dynamics::IdaIntegrator ida(ti.ida_data(), ti, nonlinear_problem, M);
     s.u.reinit(disc.n_dofs());
     s.v.reinit(disc.n_dofs());
     s.t = 0.;
@@ -223,7 +230,8 @@ namespace TissueContact
               << std::defaultfloat << std::setprecision(6) << "\n";
           ++outputs;
           if (p.output.write_vtu)
-            vtu.write(disc, problem.elastic_assembler(), o.u, o.t, depth);
+            vtu.write(
+              disc, nonlinear_problem.elastic_assembler(), o.u, o.t, depth);
         });
       }
     catch (const std::exception &e)

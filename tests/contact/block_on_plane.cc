@@ -105,7 +105,7 @@ main(int argc, char **argv)
                              eps)),
                            log);
       const auto         stats = sim.run();
-      const auto        *c     = sim.contact_assembler();
+      const auto        *c     = sim.problem().contact_assembler();
       const Tensor<1, 3> F     = c->obstacle_force(sim.solution());
       const double       d     = c->max_obstacle_penetration(sim.solution());
       deallog << "plane, eps = " << eps << ": reaction / load - 1 "
@@ -140,10 +140,11 @@ main(int argc, char **argv)
                        log);
   sim.run();
   const Tensor<1, 3> F =
-    sim.contact_assembler()->obstacle_force(sim.solution());
+    sim.problem().contact_assembler()->obstacle_force(sim.solution());
   deallog << "sphere R = 10, eps = 1e3: vertical reaction / load - 1 "
           << error_bound(std::abs(F[2] / load - 1.), -8) << ", max penetration "
           << std::setprecision(3)
-          << sim.contact_assembler()->max_obstacle_penetration(sim.solution())
+          << sim.problem().contact_assembler()->max_obstacle_penetration(
+               sim.solution())
           << std::setprecision(6) << std::endl;
 }

@@ -104,14 +104,14 @@ main(int argc, char **argv)
                            log);
       const auto         stats = sim.run();
       const auto        &u     = sim.solution();
-      const auto        *c     = sim.contact_assembler();
+      const auto        *c     = sim.problem().contact_assembler();
 
       // contact force on the upper block: -dW/du summed over its DoFs
       Vector<double> R(u.size());
       c->assemble(u, R, nullptr);
-      const auto                          &disc      = sim.discretization();
-      const auto                           component = disc.dof_components();
-      std::vector<bool>                    upper(u.size(), false);
+      const auto       &disc      = sim.problem().discretization();
+      const auto        component = disc.dof_components();
+      std::vector<bool> upper(u.size(), false);
       std::vector<types::global_dof_index> dofs(disc.fe.n_dofs_per_cell());
       for (const auto &cell : disc.dof_handler.active_cell_iterators())
         if (cell->material_id() == 2)

@@ -98,7 +98,8 @@ main(int argc, char **argv)
             outcome = o.str();
           }
         const double d =
-          sim.contact_assembler()->max_body_penetration(sim.solution());
+          sim.problem().contact_assembler()->max_body_penetration(
+            sim.solution());
         // a failing run's iteration counts depend on rounding (it
         // chatters until the increment is cut to the minimum): print a bound
         deallog << "eps " << std::setw(4) << eps << ", " << std::setw(17)

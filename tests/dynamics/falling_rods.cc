@@ -65,7 +65,7 @@ main(int argc, char **argv)
                   "set End time = " + std::to_string(end_time)}});
   std::ostringstream log;
   DynamicSimulation  sim(Scene::SceneParameters::from_string(prm), log);
-  const auto        &problem = sim.static_problem();
+  const auto        &problem = sim.problem();
   const DynamicsTestScenes::RodTips tips(problem.discretization());
   const unsigned int                n_rods = tips.centres.size();
   const double                      r      = tips.radius;

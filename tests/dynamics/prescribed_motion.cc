@@ -15,7 +15,7 @@
 
 #include <tissue_contact/dynamics/mass_matrix.h>
 #include <tissue_contact/dynamics/time_integrator.h>
-#include <tissue_contact/simulation/static_simulation.h>
+#include <tissue_contact/simulation/problem.h>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -32,7 +32,7 @@ main(int argc, char **argv)
                 clamp.size(),
                 clamp + "\n    set Translation = 0, 0, 0.01");
   std::ostringstream   log;
-  StaticSimulation     sim(Scene::SceneParameters::from_string(scene), log);
+  Problem              sim(Scene::SceneParameters::from_string(scene));
   const auto          &disc      = sim.discretization();
   const auto           n         = disc.n_dofs();
   const auto           component = disc.dof_components();

@@ -33,7 +33,7 @@ main(int argc, char **argv)
   stat.solve_quietly();
 
   // tip deflection: the smallest z displacement of each bar's free end
-  const auto &disc      = stat.discretization();
+  const auto &disc      = stat.problem().discretization();
   const auto  X         = disc.support_points();
   const auto  component = disc.dof_components();
   const auto  tip       = [&](const Vector<double> &u, const double y0) {

@@ -4,7 +4,7 @@
 #pragma once
 
 #include <tissue_contact/dynamics/mass_matrix.h>
-#include <tissue_contact/simulation/static_simulation.h>
+#include <tissue_contact/simulation/problem.h>
 
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/numerics/matrix_tools.h>
@@ -91,14 +91,14 @@ end
   struct BarOscillator
   {
     std::ostringstream      log;
-    StaticSimulation        sim;
+    Problem                 sim;
     types::global_dof_index n;
     SparseMatrix<double>    M;
     Vector<double>          M_lumped, phi;
     double                  phi_M_phi = 0., omega = 0., T = 0., omega_max = 0.;
 
     BarOscillator()
-      : sim(Scene::SceneParameters::from_string(bar), log)
+      : sim(Scene::SceneParameters::from_string(bar))
       , n(sim.n_dofs())
       , M(sim.discretization().sparsity_pattern)
     {
@@ -177,14 +177,14 @@ end
   struct FallingBlock
   {
     std::ostringstream      log;
-    StaticSimulation        sim;
+    Problem                 sim;
     types::global_dof_index n;
     SparseMatrix<double>    M;
     Vector<double>          ez;
     double                  mass = 0.;
 
     FallingBlock()
-      : sim(Scene::SceneParameters::from_string(falling_block), log)
+      : sim(Scene::SceneParameters::from_string(falling_block))
       , n(sim.n_dofs())
       , M(sim.discretization().sparsity_pattern)
       , ez(n)

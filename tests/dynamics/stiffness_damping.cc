@@ -14,7 +14,7 @@
 
 #include <tissue_contact/dynamics/mass_matrix.h>
 #include <tissue_contact/dynamics/time_integrator.h>
-#include <tissue_contact/simulation/static_simulation.h>
+#include <tissue_contact/simulation/problem.h>
 
 #include <sstream>
 
@@ -60,9 +60,7 @@ main(int argc, char **argv)
     {"neo-Hookean", "K(u_n)", true}};
   for (const auto &[model, tangent, current] : cases)
     {
-      std::ostringstream log;
-      StaticSimulation   sim(
-        Scene::SceneParameters::from_string(cantilever(model)), log);
+      Problem sim(Scene::SceneParameters::from_string(cantilever(model)));
       SparseMatrix<double> M(sim.discretization().sparsity_pattern);
       Dynamics::assemble_consistent_mass(sim.discretization(),
                                          sim.get_scene().body_data(),

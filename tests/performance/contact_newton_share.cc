@@ -64,26 +64,27 @@ main(int argc, char **argv)
       StaticSimulation   sim(Scene::SceneParameters::from_string(prm), log);
       sim.solve_quietly();
       const Vector<double> &u = sim.solution();
-      const auto            n = sim.n_dofs();
+      const auto            n = sim.problem().n_dofs();
 
-      SparseMatrix<double> K(sim.sparsity_pattern());
+      SparseMatrix<double> K(sim.problem().sparsity_pattern());
       Vector<double>       R(n), Rc(n), du(n);
       Timer                timer;
       const unsigned int   repeat = 3;
       for (unsigned int r = 0; r < repeat; ++r)
-        sim.assemble(u, 1., R, &K);
+        sim.problem().assemble(u, 1., R, &K);
       const double t_assembly = timer.wall_time() / repeat;
       timer.restart();
       for (unsigned int r = 0; r < repeat; ++r)
-        sim.contact_assembler()->assemble(u, Rc, &K);
+        sim.problem().contact_assembler()->assemble(u, Rc, &K);
       const double t_contact = timer.wall_time() / repeat;
       timer.restart();
-      sim.contact_assembler()->has_couplings(u, sim.sparsity_pattern());
+      sim.problem().contact_assembler()->has_couplings(
+        u, sim.problem().sparsity_pattern());
       const double t_pattern = timer.wall_time();
 
-      sim.assemble(u, 1., R, &K);
+      sim.problem().assemble(u, 1., R, &K);
       std::map<types::global_dof_index, double> zero;
-      for (const auto &t : sim.prescribed_values(1.))
+      for (const auto &t : sim.problem().prescribed_values(1.))
         zero[t.first] = 0.;
       Vector<double> rhs(R);
       rhs *= -1.;
@@ -94,14 +95,17 @@ main(int argc, char **argv)
           Solvers::LinearSolver::Parameters lp;
           lp.type               = s == 0 ? "direct" : "GMRES+AMG";
           lp.relative_tolerance = 1e-8;
-          const Solvers::LinearSolver solver(lp, sim.constant_modes());
+          const Solvers::LinearSolver solver(lp,
+                                             sim.problem().constant_modes());
           du = 0.;
           timer.restart();
           solver.solve(K, du, rhs);
           t_solve[s] = timer.wall_time();
         }
-      const auto n_tets =
-        sim.discretization().dof_handler.get_triangulation().n_active_cells();
+      const auto n_tets = sim.problem()
+                            .discretization()
+                            .dof_handler.get_triangulation()
+                            .n_active_cells();
       std::ostringstream share;
       share << std::fixed << std::setprecision(0)
             << 100. * t_contact / (t_assembly + t_solve[0]) << " % / "

@@ -47,7 +47,7 @@ main(int argc, char **argv)
     "falling_rods.prm", {{"falling_rods.msh", "falling_rods_2x2.msh"}});
   const auto           parameters = Scene::SceneParameters::from_string(prm);
   std::ostringstream   log;
-  StaticSimulation     sim(parameters, log);
+  Problem              sim(parameters);
   const auto           n = sim.n_dofs();
   SparseMatrix<double> M(sim.discretization().sparsity_pattern);
   Dynamics::assemble_consistent_mass(sim.discretization(),

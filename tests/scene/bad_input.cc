@@ -82,7 +82,7 @@ main(int argc, char **argv)
       StaticSimulation   sim(Scene::SceneParameters::from_string(quiet +
                                                                mesh_file(file)),
                            screen);
-      const auto         cell = sim.get_scene().triangulation.begin_active();
+      const auto cell = sim.problem().get_scene().triangulation.begin_active();
       deallog << file << ": read, tetrahedron volume "
               << ((cell->vertex(1) - cell->vertex(0)) *
                   cross_product_3d(cell->vertex(2) - cell->vertex(0),

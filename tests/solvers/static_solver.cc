@@ -162,7 +162,7 @@ namespace
                    const types::boundary_id id,
                    const unsigned int       component)
   {
-    const auto                               &disc = sim.discretization();
+    const auto &disc = sim.problem().discretization();
     std::map<types::global_dof_index, double> values;
     std::vector<types::global_dof_index> face_dofs(disc.fe.n_dofs_per_face());
     for (const auto &cell : disc.dof_handler.active_cell_iterators())
@@ -227,7 +227,8 @@ namespace
                   " set Distortion = 0.2\nend\n" +
                     bcs + "end\n"),
             log);
-    const auto q = sim->elastic_assembler().cell_quantities(sim->solution());
+    const auto q =
+      sim->problem().elastic_assembler().cell_quantities(sim->solution());
     deallog << "90 degree rigid rotation, " << model << ": max von Mises / mu "
             << error_bound(q.von_mises.linfty_norm() / 3., -10)
             << ", max |J - 1| "
@@ -414,9 +415,10 @@ namespace
               "subsection Boundary conditions\n"
               " set Number of Dirichlet conditions = 0\nend\n",
       log);
-    const auto &disc = sim->discretization();
+    const auto &disc = sim->problem().discretization();
     const auto  X    = disc.support_points();
-    const auto &body = sim->get_scene().parameters.bodies[1].rigid_motion;
+    const auto &body =
+      sim->problem().get_scene().parameters.bodies[1].rigid_motion;
     const std::vector<unsigned int> component = disc.dof_components();
     double                          error = 0., u_max = 0.;
     for (types::global_dof_index i = 0; i < disc.n_dofs(); ++i)
@@ -425,7 +427,8 @@ namespace
         error = std::max(error, std::abs(sim->solution()[i] - expected));
         u_max = std::max(u_max, std::abs(expected));
       }
-    const auto q = sim->elastic_assembler().cell_quantities(sim->solution());
+    const auto q =
+      sim->problem().elastic_assembler().cell_quantities(sim->solution());
     deallog << "rigid skin layer rotated 30 degrees: free muscle follows, "
             << "max |u - rigid motion| / max |u| "
             << error_bound(error / u_max, -10) << ", max von Mises / mu "

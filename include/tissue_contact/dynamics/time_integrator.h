@@ -5,6 +5,7 @@
 #include <tissue_contact/solvers/nonlinear_problem.h>
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/sundials/ida.h>
@@ -170,6 +171,14 @@ namespace TissueContact
       /** Newton iterations of the last implicit step. */
       unsigned int last_iterations = 0;
 
+      /** While set, assembly and linear solves are timed as the sections
+       * "assembly" and "linear solve" of @p timer (null: not timed). */
+      void
+      set_timer(TimerOutput *timer)
+      {
+        this->timer = timer;
+      }
+
       const Parameters parameters;
 
     private:
@@ -180,6 +189,7 @@ namespace TissueContact
       /** One Newton solver for all steps: its matrix is allocated once
        * (it is rebuilt only when the problem's sparsity pattern changes). */
       Solvers::IncrementalNewtonSolver newton;
+      TimerOutput                     *timer               = nullptr;
       double                           reference_energy    = 0.;
       bool                             first_explicit_step = true;
 

@@ -1,7 +1,7 @@
 #pragma once
 
 #include <tissue_contact/dynamics/time_integrator.h>
-#include <tissue_contact/simulation/static_simulation.h>
+#include <tissue_contact/simulation/problem.h>
 
 #include <fstream>
 #include <functional>
@@ -38,11 +38,11 @@ namespace TissueContact
                                  const Dynamics::State          &before,
                                  const Dynamics::State &after)> &on_step = {});
 
-    /** The static problem behind it (assembly, contact, energy). */
-    const StaticSimulation &
-    static_problem() const
+    /** The scene's problem it integrates (assembly, contact, energy). */
+    const Problem &
+    problem() const
     {
-      return problem;
+      return nonlinear_problem;
     }
 
     const Dynamics::State &
@@ -66,7 +66,7 @@ namespace TissueContact
     depth_field() const;
 
     std::ostream        &out;
-    StaticSimulation     problem;
+    Problem              nonlinear_problem;
     SparseMatrix<double> M;
     Vector<double>       M_lumped;
     Dynamics::State      s;

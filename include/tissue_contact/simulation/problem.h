@@ -1,0 +1,135 @@
+#pragma once
+
+#include <tissue_contact/base/discretization.h>
+#include <tissue_contact/contact/contact_assembler.h>
+#include <tissue_contact/elasticity/elastic_assembler.h>
+#include <tissue_contact/scene/scene.h>
+#include <tissue_contact/solvers/nonlinear_problem.h>
+
+#include <deal.II/base/timer.h>
+
+#include <memory>
+#include <vector>
+
+namespace TissueContact
+{
+  using namespace dealii;
+
+  /**
+   * What a scene is, as the discrete problem the solvers see: the mesh and
+   * its bodies (Scene::Scene), the finite element space, the elastic weak
+   * form with its dead loads (Elasticity::ElasticAssembler), the contact
+   * interactions the scene declares (none: no contact search at all) and the
+   * prescribed displacements of boundaries and rigid bodies. As a
+   * Solvers::NonlinearProblem it gives the residual and tangent
+   * @f$R(u,\lambda) = f_{int}(u) + \partial W_c/\partial u - \lambda
+   * f_{ext}@f$, the potential energy and the prescribed values at a load
+   * factor (doc/theory/02, 04, 05). The drivers own one:
+   * StaticSimulation (load stepping) and DynamicSimulation (time
+   * integration, which adds the mass).
+   */
+  class Problem : public Solvers::NonlinearProblem
+  {
+  public:
+    /** Build the scene of @p parameters (mesh checked, materials
+     * created), its finite element space and assemblers. Throws naming
+     * what is wrong in the input. */
+    explicit Problem(const Scene::SceneParameters &parameters);
+
+    const Scene::Scene &
+    get_scene() const
+    {
+      return scene;
+    }
+    const Discretization &
+    discretization() const
+    {
+      return disc;
+    }
+    const Elasticity::ElasticAssembler &
+    elastic_assembler() const
+    {
+      return assembler;
+    }
+    /** The contact assembler, or null if the scene declares no contact. */
+    const Contact::ContactAssembler *
+    contact_assembler() const
+    {
+      return contact.get();
+    }
+    /** The material depth at every vertex for the output, or null if the
+     * scene declares no body pair. */
+    const std::vector<double> *
+    depth_field() const;
+    /** Number of prescribed DoFs. */
+    std::size_t
+    n_prescribed() const
+    {
+      return prescribed.size();
+    }
+    /** While set, contact assembly is timed as the section "assembly:
+     * contact part" of @p timer (null: not timed). */
+    void
+    set_timer(TimerOutput *timer)
+    {
+      this->timer = timer;
+    }
+
+    // NonlinearProblem
+    types::global_dof_index
+    n_dofs() const override
+    {
+      return disc.n_dofs();
+    }
+    /** The finite element pattern, plus the couplings of current contact
+     * pairs. */
+    const SparsityPattern &
+    sparsity_pattern() const override
+    {
+      return sparsity;
+    }
+    bool
+    update_sparsity_pattern(const Vector<double> &u) override;
+    bool
+    assemble(const Vector<double> &u,
+             const double          load_factor,
+             Vector<double>       &R,
+             SparseMatrix<double> *K) override;
+    std::map<types::global_dof_index, double>
+    prescribed_values(const double load_factor) const override;
+    double
+    external_force_norm(const double load_factor) const override;
+    Vector<double>
+    quasi_viscosity_diagonal(const double eta) const override;
+    /** The three rigid translations (one mask per displacement
+     * component), AMG's near-null space. */
+    std::vector<std::vector<bool>>
+    constant_modes() const override;
+    /** Elastic potential (with the loads' work) plus contact energy. */
+    double
+    energy(const Vector<double> &u, const double load_factor) const override;
+
+    /** The same, and the contact energy per interaction in
+     * @p contact_energies (ContactAssembler::energies(); empty without
+     * contact). */
+    double
+    energy(const Vector<double> &u,
+           const double          load_factor,
+           std::vector<double>  &contact_energies) const;
+
+  private:
+    /** sparsity = the FE pattern + the contact couplings at @p u (with a
+     * margin of half the smallest cell diameter, so that nearby pairs do
+     * not force a rebuild at every iteration). */
+    void
+    rebuild_sparsity_pattern(const Vector<double> &u);
+
+    Scene::Scene                               scene;
+    Discretization                             disc;
+    Elasticity::ElasticAssembler               assembler;
+    std::unique_ptr<Contact::ContactAssembler> contact;
+    TimerOutput                               *timer = nullptr;
+    SparsityPattern                            sparsity;
+    std::vector<Scene::PrescribedDof>          prescribed;
+  };
+} // namespace TissueContact
