@@ -79,14 +79,41 @@ namespace TissueContactTests
   }
 
   /** Round a small error to a power of ten for a machine-independent log:
-   * prints "< 1e-k" with the smallest k such that the bound holds, capped. */
+   * prints "< 10^k" with the smallest k >= @p smallest_exponent such that
+   * the bound holds. The exponent is an integer of its own (numdiff splits
+   * at '^'), so the comparison with the expected log fails as soon as the
+   * error grows by a power of ten: a bound written as "1e-12" would pass
+   * numdiff's absolute tolerance of 1e-6 at any error below 1e-6. */
   inline std::string
   error_bound(const double e, const int smallest_exponent = -12)
   {
     for (int k = smallest_exponent; k <= 0; ++k)
       if (e < std::pow(10., k))
-        return "< 1e" + std::to_string(k);
+        return "< 10^" + std::to_string(k);
     return "= " + std::to_string(e) + " (large)";
+  }
+
+  /** @p x as "m.m 10^e" with @p digits decimals of the mantissa: small
+   * numbers (residual histories) keep their magnitude in the comparison,
+   * which numdiff's absolute tolerance of 1e-6 would otherwise hide. */
+  inline std::string
+  scientific(const double x, const unsigned int digits = 1)
+  {
+    if (x == 0.)
+      return "0";
+    int    e = static_cast<int>(std::floor(std::log10(std::abs(x))));
+    double m = x / std::pow(10., e);
+    // rounding the mantissa may carry it to 10
+    std::ostringstream probe;
+    probe << std::fixed << std::setprecision(digits) << m;
+    if (std::abs(std::stod(probe.str())) >= 10.)
+      {
+        ++e;
+        m /= 10.;
+      }
+    std::ostringstream out;
+    out << std::fixed << std::setprecision(digits) << m << " 10^" << e;
+    return out.str();
   }
 
 #ifdef SOURCE_DIR

@@ -121,13 +121,12 @@ main(int argc, char **argv)
           const auto r = last_increment_residuals(log.str());
           deallog << "  last increment, residuals:";
           for (const double v : r)
-            deallog << " " << std::setprecision(1) << std::scientific << v;
+            deallog << " " << scientific(v);
           deallog << std::defaultfloat << std::setprecision(6) << std::endl;
           // bounded for quadratic convergence
           deallog << "  r_k+1 / r_k^2:";
           for (unsigned int k = 0; k + 1 < r.size(); ++k)
-            deallog << " " << std::setprecision(1) << std::scientific
-                    << r[k + 1] / (r[k] * r[k]);
+            deallog << " " << scientific(r[k + 1] / (r[k] * r[k]));
           deallog << std::defaultfloat << std::setprecision(6) << std::endl;
         }
     }

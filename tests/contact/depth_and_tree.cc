@@ -1,4 +1,8 @@
 // Material depth and the bounding-volume tree:
+//  - the point-triangle distance behind the depth, in each of its seven
+//    regions (interior, three edges, three vertices), against an
+//    independent evaluation: the distance to the plane where the projection
+//    falls inside, else the least distance to the three edge segments;
 //  - the depth of a box mesh equals the analytic distance to its faces at
 //    every vertex (exact: the faces are planar), also with only some faces
 //    declared contact surfaces;
@@ -19,6 +23,8 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <algorithm>
+#include <array>
 #include <set>
 
 using namespace dealii;
@@ -215,6 +221,76 @@ namespace
                 << std::setprecision(6) << std::endl;
       }
   }
+
+
+  /** Distance from p to the segment [a, b]. */
+  double
+  segment_distance(const Point<3> &p, const Point<3> &a, const Point<3> &b)
+  {
+    const Tensor<1, 3> d = b - a;
+    const double       t = std::clamp(((p - a) * d) / (d * d), 0., 1.);
+    return p.distance(a + t * d);
+  }
+
+  void
+  triangle_distance_regions()
+  {
+    const Point<3>     a(0., 0., 0.), b(1., 0.2, 0.1), c(0.3, 0.9, -0.2);
+    const Tensor<1, 3> n = cross_product_3d(b - a, c - a);
+    // region of the nearest point: 0 interior, 1-3 edges ab, bc, ca, 4-6
+    // vertices a, b, c
+    std::array<unsigned int, 7> count{};
+    std::array<double, 7>       error{};
+    for (unsigned int i = 0; i < 20000; ++i)
+      {
+        const Point<3> p(random_value(-1., 2.),
+                         random_value(-1., 2.),
+                         random_value(-1., 1.));
+        // barycentric coordinates of the projection onto the plane
+        const Point<3> q   = p - ((p - a) * n) / (n * n) * n;
+        const double   A   = n * n;
+        const double   l_a = cross_product_3d(b - q, c - q) * n / A,
+                     l_b   = cross_product_3d(c - q, a - q) * n / A,
+                     l_c   = 1. - l_a - l_b;
+        double       reference;
+        unsigned int region;
+        if (l_a >= 0. && l_b >= 0. && l_c >= 0.)
+          {
+            reference = std::abs((p - a) * n) / std::sqrt(A);
+            region    = 0;
+          }
+        else
+          {
+            const std::array<double, 3> e = {segment_distance(p, a, b),
+                                             segment_distance(p, b, c),
+                                             segment_distance(p, c, a)};
+            const unsigned int          k =
+              std::min_element(e.begin(), e.end()) - e.begin();
+            reference = e[k];
+            // an edge's end point is a vertex region
+            const std::array<Point<3>, 3> v  = {a, b, c};
+            const Point<3>               &s0 = v[k], &s1 = v[(k + 1) % 3];
+            const Tensor<1, 3>            d = s1 - s0;
+            const double                  t = ((p - s0) * d) / (d * d);
+            region = t <= 0. ? 4 + k : (t >= 1. ? 4 + (k + 1) % 3 : 1 + k);
+          }
+        const double distance = Contact::point_triangle_distance(p, a, b, c);
+        ++count[region];
+        error[region] = std::max(error[region], std::abs(distance - reference));
+      }
+    const char *names[] = {"interior",
+                           "edge ab",
+                           "edge bc",
+                           "edge ca",
+                           "vertex a",
+                           "vertex b",
+                           "vertex c"};
+    deallog << "point-triangle distance against the independent evaluation:"
+            << std::endl;
+    for (unsigned int r = 0; r < 7; ++r)
+      deallog << "  " << names[r] << ": " << count[r] << " points, max error "
+              << error_bound(error[r], -15) << std::endl;
+  }
 } // namespace
 
 int
@@ -233,4 +309,6 @@ main()
           << std::endl;
   tree_queries();
   broad_phase();
+  // last: it draws from the shared random generator
+  triangle_distance_regions();
 }

@@ -3,7 +3,10 @@
 // objectivity, positive-definite tangent at rest and the small-strain Lame
 // equivalents of doc/theory/03-materials.md. Also evaluates the Veronda forms
 // printed in the paper and in the dissertation and shows what is wrong with
-// them (nonzero stress at rest; negative shear modulus).
+// them (nonzero stress at rest; negative shear modulus). Finally every model
+// against an independent evaluation: Psi, P and the tangent at one F from a
+// symbolic derivation of the energies of doc/theory/03-materials.md
+// (contrib/material_reference.py, differentiating Psi(F) directly).
 
 #include "../tests.h"
 
@@ -128,8 +131,10 @@ namespace
     // touch A_1111, A_1122 and A_1212 = A_0101)
     const double mu     = r0.A[0][1][0][1];
     const double lambda = r0.A[1][1][2][2];
-    deallog << "mu = " << mu << " (table " << expected_mu
-            << "), lambda = " << lambda << " (table " << expected_l << ")"
+    deallog << "mu = " << mu << ", lambda = " << lambda << "; minus the table: "
+            << error_bound(std::abs(mu - expected_mu) / std::abs(expected_mu))
+            << ", "
+            << error_bound(std::abs(lambda - expected_l) / std::abs(expected_l))
             << std::endl;
     deallog << "A_xxxx = " << r0.A[0][0][0][0] << std::endl;
     // positive definiteness of the tangent on symmetric strains at rest
@@ -146,6 +151,52 @@ namespace
       min_ev = std::min(min_ev, K.eigenvalue(a).real());
     deallog << "smallest eigenvalue of the tangent at rest "
             << (min_ev > 0 ? "positive" : "NOT positive") << std::endl;
+  }
+
+  /** Psi, P (row by row), |A| and G : A : H at F_ref, from
+   * contrib/material_reference.py. */
+  struct Reference
+  {
+    double                psi;
+    std::array<double, 9> P;
+    double                norm_A, G_A_H;
+  };
+
+  void
+  compare_with_reference(const Material &m, const Reference &ref)
+  {
+    const double F_ref[3][3] = {{1.1, 0.2, -0.1},
+                                {0.05, 0.9, 0.15},
+                                {-0.12, 0.08, 1.05}};
+    const double G[3][3]     = {{1, 2, 0}, {0, -1, 3}, {1, 0, 1}};
+    const double H[3][3]     = {{0, 1, -1}, {2, 1, 0}, {0, 3, 1}};
+    Tensor<2, 3> F;
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int J = 0; J < 3; ++J)
+        F[i][J] = F_ref[i][J];
+    MaterialResponse r;
+    m.evaluate(F, X0, r);
+    double dP = 0., nP = 0., nA = 0., GAH = 0.;
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int J = 0; J < 3; ++J)
+        {
+          dP += std::pow(r.P[i][J] - ref.P[3 * i + J], 2);
+          nP += std::pow(ref.P[3 * i + J], 2);
+          for (unsigned int k = 0; k < 3; ++k)
+            for (unsigned int L = 0; L < 3; ++L)
+              {
+                nA += std::pow(r.A[i][J][k][L], 2);
+                GAH += G[i][J] * r.A[i][J][k][L] * H[k][L];
+              }
+        }
+    deallog << m.name() << ": Psi "
+            << error_bound(std::abs(r.psi - ref.psi) / std::abs(ref.psi), -15)
+            << ", P " << error_bound(std::sqrt(dP / nP), -15) << ", |A| "
+            << error_bound(std::abs(std::sqrt(nA) - ref.norm_A) / ref.norm_A,
+                           -15)
+            << ", G:A:H "
+            << error_bound(std::abs(GAH - ref.G_A_H) / std::abs(ref.G_A_H), -15)
+            << std::endl;
   }
 
   // The Veronda forms as printed in the sources, as energies of C.
@@ -236,8 +287,21 @@ main()
           std::make_unique<MooneyRivlin>(5., 1., 50.), 2., 3., fiber_x),
         12.,
         204.);
-  deallog << "fiber stiffness added to A_xxxx: 4 alpha beta^2 = "
-          << 4. * 2. * 9. << std::endl;
+  {
+    // at rest the fiber adds C_f = 4 alpha_f beta_f^2 f x f x f x f
+    // (doc/theory/03-materials.md, sec. 3.5)
+    MaterialResponse with, without;
+    FiberReinforcement(std::make_unique<MooneyRivlin>(5., 1., 50.),
+                       2.,
+                       3.,
+                       fiber_x)
+      .evaluate(unit_symmetric_tensor<3>(), X0, with);
+    MooneyRivlin(5., 1., 50.).evaluate(unit_symmetric_tensor<3>(), X0, without);
+    const double added = with.A[0][0][0][0] - without.A[0][0][0][0];
+    deallog << "fiber stiffness added to A_xxxx: " << added
+            << "; minus 4 alpha beta^2: "
+            << error_bound(std::abs(added - 4. * 2. * 9.) / 72.) << std::endl;
+  }
   // a position-dependent fiber field: at X0 the fiber is not along x, so the
   // shear entries include fiber stiffness and differ from the ground table
   deallog << "fiber field (1, x, 0.5 z + y) at X0" << std::endl;
@@ -270,4 +334,97 @@ main()
   expect_error([] { MooneyRivlin(1., 0., -10.); });
   expect_error([] { Veronda(7., -8., 100.); });
   expect_error([] { LinearElastic(1., -5.); });
+
+  // against the independent symbolic evaluation
+  deallog << "--- against contrib/material_reference.py at F_ref" << std::endl;
+  const Reference references[] = {
+    // neo-Hookean(3, 5)
+    {0.32445399650303897,
+     {0.50845421483899567,
+      0.81093673939319488,
+      -0.63510517463883442,
+      0.80225828635058838,
+      -0.71986798760881876,
+      0.78510517463883434,
+      -0.71904125854160827,
+      0.74864178293394501,
+      0.21782972191019911},
+     26.841408718912469,
+     45.89942604232143},
+    // Mooney-Rivlin(5, 1, 50)
+    {1.3358272120284773,
+     {2.3707757442557442,
+      3.3946010289710289,
+      -2.5376047552447552,
+      3.3133428271728271,
+      -2.5913481718281717,
+      3.333684755244755,
+      -2.8932836663336663,
+      3.1649393606393605,
+      1.2778583916083917},
+     693.43624046823709,
+     275.71102715012262},
+    // Veronda(7, 8, 100)
+    {25.907496393812622,
+     {588.26221048996979,
+      116.57665715928793,
+      -64.355483914309303,
+      37.399654324787015,
+      461.78340545855394,
+      88.175214682652765,
+      -75.925353820048286,
+      50.711587195383508,
+      554.63019033101693},
+     34540.817676244493,
+     54160.20050114717},
+    // Saint Venant-Kirchhoff(3, 5)
+    {0.33309509874999998,
+     {1.5708850000000001,
+      0.80610999999999999,
+      -0.72972499999999996,
+      0.64807749999999997,
+      0.23131499999999999,
+      0.64563749999999998,
+      -0.80565299999999995,
+      0.54410199999999997,
+      1.1283075},
+     29.554317243720924,
+     72.061599999999999},
+    // linear(Z(3), Z(5))
+    {0.31945000000000001,
+     {0.84999999999999998,
+      0.75,
+      -0.66000000000000003,
+      0.75,
+      -0.34999999999999998,
+      0.68999999999999995,
+      -0.66000000000000003,
+      0.68999999999999995,
+      0.55000000000000004},
+     24.919871588754223,
+     52},
+    // Mooney-Rivlin(5, 1, 50) + fiber(2, 3, e_x)
+    {1.9249470727403033,
+     {15.244206824953796,
+      3.3946010289710289,
+      -2.5376047552447552,
+      3.8984987853863751,
+      -2.5913481718281717,
+      3.333684755244755,
+      -4.2976579660461809,
+      3.1649393606393605,
+      1.2778583916083917},
+     766.21692272169298,
+     289.64846121871392},
+  };
+  const std::unique_ptr<Material> models[] = {
+    std::make_unique<NeoHookean>(3., 5.),
+    std::make_unique<MooneyRivlin>(5., 1., 50.),
+    std::make_unique<Veronda>(7., 8., 100.),
+    std::make_unique<SaintVenantKirchhoff>(3., 5.),
+    std::make_unique<LinearElastic>(3., 5.),
+    std::make_unique<FiberReinforcement>(
+      std::make_unique<MooneyRivlin>(5., 1., 50.), 2., 3., fiber_x)};
+  for (unsigned int m = 0; m < 6; ++m)
+    compare_with_reference(*models[m], references[m]);
 }

@@ -189,6 +189,9 @@ namespace
     const double E = 1000., g = 0.01, b = 0.1, h = 0.1, L = 1.;
     const double w_eb =
       g * b * h * std::pow(L, 4) / (8. * E * b * h * h * h / 12.);
+    // Timoshenko: the shear deflection q L^2 / (2 kappa G A) added, with
+    // kappa = 5/6, G = E / 2 (nu = 0), q = g A
+    const double w_timoshenko = w_eb + g * L * L / (2. * 5. / 6. * 0.5 * E);
     std::ostringstream log;
     const auto         sim = solve(
       scene("set Model = neo-Hookean\n set Mu = 500\n set Lambda = 0\n",
@@ -205,9 +208,10 @@ namespace
     const double w = -boundary_average(*sim, 1, 2);
     deallog << "cantilever P" << degree << " " << n_length
             << "x2x2: tip deflection / Euler-Bernoulli = " << std::fixed
-            << std::setprecision(3) << w / w_eb << std::defaultfloat
-            << std::setprecision(6) << " (shear deformation adds 0.8 %)"
-            << std::endl;
+            << std::setprecision(3) << w / w_eb
+            << ", / Timoshenko = " << w / w_timoshenko
+            << " (Timoshenko / Euler-Bernoulli " << w_timoshenko / w_eb << ")"
+            << std::defaultfloat << std::setprecision(6) << std::endl;
   }
 
   void
@@ -284,6 +288,61 @@ namespace
     return r;
   }
 
+  /** The problem of a scene, watched: every state the solver assembles a
+   * tangent at (the start of a Newton iteration, i.e. every accepted
+   * iterate and the increment's initial guess) is checked for inverted
+   * elements. */
+  class WatchedProblem : public Solvers::NonlinearProblem
+  {
+  public:
+    explicit WatchedProblem(Problem &problem)
+      : problem(problem)
+    {}
+    types::global_dof_index
+    n_dofs() const override
+    {
+      return problem.n_dofs();
+    }
+    const SparsityPattern &
+    sparsity_pattern() const override
+    {
+      return problem.sparsity_pattern();
+    }
+    bool
+    assemble(const Vector<double> &u,
+             const double          load_factor,
+             Vector<double>       &R,
+             SparseMatrix<double> *K) override
+    {
+      if (K != nullptr)
+        {
+          ++n_iterates;
+          min_J = std::min(min_J, problem.elastic_assembler().min_jacobian(u));
+        }
+      return problem.assemble(u, load_factor, R, K);
+    }
+    std::map<types::global_dof_index, double>
+    prescribed_values(const double load_factor) const override
+    {
+      return problem.prescribed_values(load_factor);
+    }
+    double
+    external_force_norm(const double load_factor) const override
+    {
+      return problem.external_force_norm(load_factor);
+    }
+    Vector<double>
+    quasi_viscosity_diagonal(const double eta) const override
+    {
+      return problem.quasi_viscosity_diagonal(eta);
+    }
+    unsigned int n_iterates = 0;
+    double       min_J      = 1e300;
+
+  private:
+    Problem &problem;
+  };
+
   void
   line_search()
   {
@@ -304,6 +363,23 @@ namespace
     deallog << "60 degree twist in one increment: converged, "
             << "step lengths" << steps << std::endl;
     deallog << "iterations with a halved step: " << halved << std::endl;
+    {
+      // the line search never accepts an inverted element: the smallest
+      // det F over every iterate Newton continued from
+      const auto parameters = Scene::SceneParameters::from_string(
+        twist(one_step) +
+        "subsection Output\n set Write VTU = false\n set Directory = .\nend\n");
+      Problem                          problem(parameters);
+      WatchedProblem                   watched(problem);
+      Solvers::IncrementalNewtonSolver solver(parameters.solver);
+      Vector<double>                   u(problem.n_dofs());
+      solver.solve(watched, u);
+      deallog << "iterates assembled: " << watched.n_iterates
+              << ", smallest det F among them "
+              << (watched.min_J > 0. ? "positive" : "NOT positive") << " ("
+              << std::setprecision(3) << watched.min_J << std::setprecision(6)
+              << ")" << std::endl;
+    }
 
     try
       {
@@ -340,7 +416,7 @@ namespace
       }
     deallog << "last increment, residuals:";
     for (const double v : r)
-      deallog << " " << std::setprecision(1) << std::scientific << v;
+      deallog << " " << scientific(v);
     deallog << std::defaultfloat << std::setprecision(6) << std::endl;
     deallog << "convergence order estimates:";
     for (unsigned int k = 1; k + 1 < r.size(); ++k)
@@ -351,8 +427,7 @@ namespace
     deallog << "r_k+1 / r_k^2 (bounded for quadratic convergence):";
     for (unsigned int k = 0; k + 1 < r.size(); ++k)
       if (r[k + 1] > 1e-12 * r[0])
-        deallog << " " << std::setprecision(1) << std::scientific
-                << r[k + 1] / (r[k] * r[k]);
+        deallog << " " << scientific(r[k + 1] / (r[k] * r[k]));
     deallog << std::defaultfloat << std::setprecision(6) << std::endl;
   }
 

@@ -1,0 +1,83 @@
+#!/usr/bin/env python3
+"""Independent reference values for tests/materials/material_derivatives.
+
+Each model's strain energy Psi is written here from doc/theory/03-materials.md
+as a function of the nine entries of F, and differentiated symbolically
+(sympy): P = dPsi/dF and A = d^2 Psi / dF dF, evaluated at one fixed F with
+40 significant digits. The code computes the same quantities through S, C
+and a push-forward, so agreement checks the derivation, not only the code's
+self-consistency. Prints C++ initializers that the test embeds:
+Psi, P (row by row), |A| (Frobenius) and G : A : H for two fixed tensors.
+
+    python3 contrib/material_reference.py
+"""
+import sympy as sp
+
+Fs = sp.Matrix(3, 3, sp.symbols("F0:9"))
+C = Fs.T * Fs
+I1 = C.trace()
+I2 = (I1**2 - (C * C).trace()) / 2
+I3 = C.det()
+E = (C - sp.eye(3)) / 2
+eps = (Fs + Fs.T) / 2 - sp.eye(3)
+
+F_value = sp.Matrix([[sp.Rational(11, 10), sp.Rational(2, 10), sp.Rational(-1, 10)],
+                     [sp.Rational(5, 100), sp.Rational(9, 10), sp.Rational(15, 100)],
+                     [sp.Rational(-12, 100), sp.Rational(8, 100), sp.Rational(105, 100)]])
+G = sp.Matrix([[1, 2, 0], [0, -1, 3], [1, 0, 1]])
+H = sp.Matrix([[0, 1, -1], [2, 1, 0], [0, 3, 1]])
+
+
+def neo_hooke(mu, lam):
+    return mu / 2 * (I1 - 3) - mu / 2 * sp.log(I3) + lam / 8 * sp.log(I3)**2
+
+
+def mooney_rivlin(C1, C2, a):
+    k = C1 + 2 * C2 + a
+    return C1 * (I1 - 3) + C2 * (I2 - 3) + a * (I3 - 1) - k * sp.log(I3)
+
+
+def veronda(alpha, beta, a):
+    return (alpha * (sp.exp(beta * (I1 - 3)) - 1) - alpha * beta / 2 * (I2 - 3)
+            + a * (I3 - 1) - a * sp.log(I3))
+
+
+def svk(mu, lam):
+    return lam / 2 * E.trace()**2 + mu * (E * E).trace()
+
+
+def linear(mu, lam):
+    return lam / 2 * eps.trace()**2 + mu * (eps * eps).trace()
+
+
+def fiber(alpha, beta, f):
+    f = sp.Matrix(f) / sp.sqrt(sum(c**2 for c in f))
+    l2 = (f.T * C * f)[0]
+    return alpha * (sp.exp(beta * (l2 - 1)) - 1) - alpha * beta * (l2 - 1)
+
+
+Z = sp.Integer  # exact constants: no binary floating point before evaluation
+models = [
+    ("neo-Hookean(3, 5)", neo_hooke(Z(3), Z(5))),
+    ("Mooney-Rivlin(5, 1, 50)", mooney_rivlin(Z(5), Z(1), Z(50))),
+    ("Veronda(7, 8, 100)", veronda(Z(7), Z(8), Z(100))),
+    ("Saint Venant-Kirchhoff(3, 5)", svk(Z(3), Z(5))),
+    ("linear(3, 5)", linear(Z(3), Z(5))),
+    ("Mooney-Rivlin(5, 1, 50) + fiber(2, 3, e_x)",
+     mooney_rivlin(Z(5), Z(1), Z(50)) + fiber(Z(2), Z(3), [1, 0, 0])),
+]
+
+subs = dict(zip(Fs, F_value))
+for name, psi in models:
+    P = [sp.diff(psi, Fs[i]) for i in range(9)]
+    A = [[sp.diff(P[i], Fs[j]) for j in range(9)] for i in range(9)]
+    psi_v = sp.N(psi.subs(subs), 40)
+    P_v = [sp.N(p.subs(subs), 40) for p in P]
+    A_v = [[sp.N(a.subs(subs), 40) for a in row] for row in A]
+    norm_A = sp.sqrt(sum(a**2 for row in A_v for a in row))
+    GAH = sum(G[i // 3, i % 3] * A_v[i][j] * H[j // 3, j % 3]
+              for i in range(9) for j in range(9))
+    fmt = lambda x: "%.17g" % float(x)
+    print("  // %s" % name)
+    print("  {%s, {%s}, %s, %s}," % (fmt(psi_v), ", ".join(fmt(p) for p in P_v),
+                                      fmt(norm_A), fmt(GAH)))
