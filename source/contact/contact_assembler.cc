@@ -1,12 +1,5 @@
 #include <tissue_contact/contact/contact_assembler.h>
-#include <tissue_contact/contact/material_depth.h>
 
-#include <deal.II/base/multithread_info.h>
-#include <deal.II/base/work_stream.h>
-
-#include <algorithm>
-#include <cmath>
-#include <map>
 #include <numeric>
 
 namespace TissueContact
@@ -15,207 +8,22 @@ namespace TissueContact
   {
     ContactAssembler::ContactAssembler(const Discretization &disc,
                                        const Parameters     &parameters)
-      : obstacles(parameters.obstacles)
-      , pairs(parameters.pairs)
+      : surface(disc, parameters.surfaces)
     {
-      const auto &contact_surfaces = parameters.surfaces;
-      const auto &tria             = disc.dof_handler.get_triangulation();
-      X                            = tria.get_vertices();
-      vertex_dofs.resize(X.size());
-      for (const auto &cell : disc.dof_handler.active_cell_iterators())
+      if (!parameters.pairs.empty())
         {
-          for (const unsigned int v : cell->vertex_indices())
-            for (unsigned int c = 0; c < 3; ++c)
-              vertex_dofs[cell->vertex_index(v)][c] =
-                cell->vertex_dof_index(v, c);
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() &&
-                contact_surfaces.count(face->boundary_id()) > 0)
-              {
-                triangles.push_back({face->vertex_index(0),
-                                     face->vertex_index(1),
-                                     face->vertex_index(2)});
-                triangle_body.push_back(cell->material_id());
-              }
+          bodies = std::make_unique<BodyContactAssembler>(
+            surface,
+            disc.dof_handler.get_triangulation(),
+            parameters.surfaces,
+            parameters.pairs);
+          interactions.push_back(bodies.get());
         }
-
-      if (pairs.empty())
-        return;
-      // material depth, and a tree over the tetrahedra of the volume bodies
-      depth = compute_material_depth(tria, contact_surfaces);
-      std::set<types::material_id> volume_bodies;
-      for (const auto &p : pairs)
-        volume_bodies.insert(p.volume_body);
-      for (const auto &cell : tria.active_cell_iterators())
-        if (volume_bodies.count(cell->material_id()) > 0)
-          {
-            tets.push_back({cell->vertex_index(0),
-                            cell->vertex_index(1),
-                            cell->vertex_index(2),
-                            cell->vertex_index(3)});
-            tet_body.push_back(cell->material_id());
-            for (const unsigned int v : tets.back())
-              AssertThrow(std::isfinite(depth[v]),
-                          ExcMessage("Contact: body with material id " +
-                                     std::to_string(cell->material_id()) +
-                                     " is the volume body of a pair but has "
-                                     "no contact surface: its material depth "
-                                     "is undefined"));
-          }
-      std::vector<BoundingBox<3>> boxes;
-      for (const auto &t : tets)
-        boxes.emplace_back(
-          std::vector<Point<3>>{X[t[0]], X[t[1]], X[t[2]], X[t[3]]});
-      tree        = std::make_unique<BoundingVolumeTree>(boxes);
-      x_at_build  = X;
-      double size = 0.;
-      for (const auto &b : boxes)
-        size += b.get_boundary_points().first.distance(
-          b.get_boundary_points().second);
-      rebuild_distance = boxes.empty() ? 0. : size / boxes.size();
-    }
-
-
-    void
-    ContactAssembler::refit(const std::vector<Point<3>> &x) const
-    {
-      std::vector<BoundingBox<3>> boxes;
-      boxes.reserve(tets.size());
-      for (const auto &t : tets)
-        boxes.emplace_back(
-          std::vector<Point<3>>{x[t[0]], x[t[1]], x[t[2]], x[t[3]]});
-      // a refitted tree stays exact but degrades when objects that were
-      // neighbours drift apart: rebuild once a vertex has moved farther than
-      // the mean tetrahedron size since the last build (a rebuild costs
-      // about 25 refits, both far below one assembly)
-      double moved = 0.;
-      for (const auto &t : tets)
-        for (const unsigned int v : t)
-          moved = std::max(moved, x[v].distance_square(x_at_build[v]));
-      if (std::sqrt(moved) > rebuild_distance)
+      if (!parameters.obstacles.empty())
         {
-          tree       = std::make_unique<BoundingVolumeTree>(boxes);
-          x_at_build = x;
-          ++n_rebuilds;
-        }
-      else
-        tree->refit(boxes);
-    }
-
-
-    template <typename F>
-    void
-    ContactAssembler::for_each_candidate(const std::vector<Point<3>> &x,
-                                         const double                 margin,
-                                         const F                     &f) const
-    {
-      for (unsigned int t = 0; t < triangles.size(); ++t)
-        for_each_candidate_of(t, x, margin, f);
-    }
-
-
-    bool
-    ContactAssembler::surface_of_a_pair(const unsigned int t) const
-    {
-      for (const auto &p : pairs)
-        if (p.surface_body == triangle_body[t])
-          return true;
-      return false;
-    }
-
-
-    template <typename F>
-    void
-    ContactAssembler::for_each_candidate_of(const unsigned int           t,
-                                            const std::vector<Point<3>> &x,
-                                            const double                 margin,
-                                            const F &f) const
-    {
-      if (!surface_of_a_pair(t))
-        return;
-      const auto    &tv = triangles[t];
-      BoundingBox<3> box(std::vector<Point<3>>{x[tv[0]], x[tv[1]], x[tv[2]]});
-      if (margin > 0.)
-        box.extend(margin);
-      tree->for_each_overlap(box, [&](const unsigned int k) {
-        const auto &kv = tets[k];
-        // a triangle that is a face of the tetrahedron
-        unsigned int shared = 0;
-        for (const unsigned int a : tv)
-          shared += std::count(kv.begin(), kv.end(), a);
-        if (shared == 3)
-          return;
-        for (const auto &p : pairs)
-          if (p.surface_body == triangle_body[t] &&
-              p.volume_body == tet_body[k])
-            f(t, k, p);
-      });
-    }
-
-
-    ContactAssembler::PairGeometry
-    ContactAssembler::pair_geometry(const std::vector<Point<3>> &x,
-                                    const unsigned int           t,
-                                    const unsigned int           k) const
-    {
-      const auto &kv = tets[k];
-      const auto &tv = triangles[t];
-      return {{x[kv[0]], x[kv[1]], x[kv[2]], x[kv[3]]},
-              {x[tv[0]], x[tv[1]], x[tv[2]]},
-              {depth[kv[0]], depth[kv[1]], depth[kv[2]], depth[kv[3]]}};
-    }
-
-
-    std::array<types::global_dof_index, 21>
-    ContactAssembler::pair_dofs(const unsigned int t,
-                                const unsigned int k) const
-    {
-      std::array<types::global_dof_index, 21> dofs;
-      for (unsigned int a = 0; a < 4; ++a)
-        for (unsigned int c = 0; c < 3; ++c)
-          dofs[3 * a + c] = vertex_dofs[tets[k][a]][c];
-      for (unsigned int a = 0; a < 3; ++a)
-        for (unsigned int c = 0; c < 3; ++c)
-          dofs[12 + 3 * a + c] = vertex_dofs[triangles[t][a]][c];
-      return dofs;
-    }
-
-
-    Point<3>
-    ContactAssembler::position(const unsigned int    v,
-                               const Vector<double> &u) const
-    {
-      return Point<3>(X[v][0] + u[vertex_dofs[v][0]],
-                      X[v][1] + u[vertex_dofs[v][1]],
-                      X[v][2] + u[vertex_dofs[v][2]]);
-    }
-
-
-    template <typename F>
-    void
-    ContactAssembler::for_each_obstacle_contact(const Vector<double> &u,
-                                                const bool with_hessian,
-                                                const F   &f) const
-    {
-      for (unsigned int t = 0; t < triangles.size(); ++t)
-        {
-          const std::array<Point<3>, 3> tri = {position(triangles[t][0], u),
-                                               position(triangles[t][1], u),
-                                               position(triangles[t][2], u)};
-          for (const auto &o : obstacles)
-            {
-              if (!o.bodies.empty() && o.bodies.count(triangle_body[t]) == 0)
-                continue;
-              bool penetrates = false;
-              for (const auto &p : tri)
-                penetrates = penetrates || o.obstacle.penetration(p) > 0.;
-              if (penetrates)
-                f(t,
-                  tri,
-                  o,
-                  obstacle_derivatives_ad(
-                    o.obstacle, tri, o.penalty, with_hessian));
-            }
+          obstacles =
+            std::make_unique<ObstacleAssembler>(surface, parameters.obstacles);
+          interactions.push_back(obstacles.get());
         }
     }
 
@@ -225,253 +33,22 @@ namespace TissueContact
                                Vector<double>       &R,
                                SparseMatrix<double> *K) const
     {
-      for_each_obstacle_contact(u,
-                                K != nullptr,
-                                [&](const unsigned int t,
-                                    const std::array<Point<3>, 3> &,
-                                    const ObstacleContact &,
-                                    const PairDerivatives &d) {
-                                  std::array<types::global_dof_index, 9> dofs;
-                                  for (unsigned int a = 0; a < 3; ++a)
-                                    for (unsigned int c = 0; c < 3; ++c)
-                                      dofs[3 * a + c] =
-                                        vertex_dofs[triangles[t][a]][c];
-                                  for (unsigned int i = 0; i < 9; ++i)
-                                    {
-                                      R[dofs[i]] += d.gradient[i];
-                                      if (K != nullptr)
-                                        for (unsigned int j = 0; j < 9; ++j)
-                                          K->add(dofs[i],
-                                                 dofs[j],
-                                                 d.hessian(i, j));
-                                    }
-                                });
-
-      for_each_pair_contact(
-        u,
-        K != nullptr,
-        [&](const unsigned int t, const unsigned int k, const PairKernel &d) {
-          const auto dofs = pair_dofs(t, k);
-          for (unsigned int i = 0; i < 21; ++i)
-            R[dofs[i]] += d.gradient[i];
-          if (K == nullptr)
-            return;
-          // rows added with sorted, unique column indices (a vertex shared
-          // by the triangle and the tetrahedron appears twice among the 21)
-          std::array<types::global_dof_index, 21> unique_dofs;
-          std::array<unsigned int, 21>            slot;
-          unsigned int                            n_unique = 0;
-          std::array<unsigned int, 21>            order;
-          std::iota(order.begin(), order.end(), 0);
-          std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
-            return dofs[a] < dofs[b];
-          });
-          for (const unsigned int i : order)
-            {
-              if (n_unique == 0 || unique_dofs[n_unique - 1] != dofs[i])
-                unique_dofs[n_unique++] = dofs[i];
-              slot[i] = n_unique - 1;
-            }
-          std::array<std::array<double, 21>, 21> block{};
-          for (unsigned int i = 0; i < 21; ++i)
-            for (unsigned int j = 0; j < 21; ++j)
-              block[slot[i]][slot[j]] += d.hessian[i][j];
-          for (unsigned int i = 0; i < n_unique; ++i)
-            K->add(unique_dofs[i],
-                   n_unique,
-                   unique_dofs.data(),
-                   block[i].data(),
-                   false,
-                   true);
-        });
+      // obstacles first: the order of the sums before the split
+      for (auto it = interactions.rbegin(); it != interactions.rend(); ++it)
+        (*it)->assemble(u, R, K);
     }
 
 
-    std::vector<Point<3>>
-    ContactAssembler::positions(const Vector<double> &u) const
+    std::vector<double>
+    ContactAssembler::energies(const Vector<double> &u) const
     {
-      std::vector<Point<3>> x(X.size());
-      for (unsigned int v = 0; v < X.size(); ++v)
-        x[v] = position(v, u);
-      return x;
-    }
-
-
-    template <typename F>
-    void
-    ContactAssembler::for_each_pair_contact(const Vector<double> &u,
-                                            const bool            with_hessian,
-                                            const F              &f) const
-    {
-      if (pairs.empty())
-        return;
-      const std::vector<Point<3>> x = positions(u);
-      refit(x);
-      // the pairs of each contact triangle are evaluated in parallel (the
-      // tree is only read); f sees them serially, in the order of a serial
-      // loop, so sums are reproducible
-      std::vector<unsigned int> surface_triangles;
-      for (unsigned int t = 0; t < triangles.size(); ++t)
-        if (surface_of_a_pair(t))
-          surface_triangles.push_back(t);
-      struct Result
-      {
-        unsigned int t = 0, k = 0;
-        PairKernel   d;
-      };
-      struct Copy
-      {
-        std::vector<Result> results;
-        unsigned int        n = 0;
-      };
-      struct Scratch
-      {};
-      WorkStream::run(
-        surface_triangles.cbegin(),
-        surface_triangles.cend(),
-        [&](const std::vector<unsigned int>::const_iterator &it,
-            Scratch &,
-            Copy &c) {
-          c.n = 0;
-          for_each_candidate_of(
-            *it,
-            x,
-            0.,
-            [&](const unsigned int t,
-                const unsigned int k,
-                const BodyContact &p) {
-              const auto [tet, tri, g] = pair_geometry(x, t, k);
-              // cheap rejection before differentiating: zero energy has
-              // zero gradient (the energy is nonnegative)
-              if (*std::max_element(g.begin(), g.end()) <= 0.)
-                return;
-              if (c.results.size() == c.n)
-                c.results.emplace_back();
-              Result    &r = c.results[c.n];
-              const bool hit =
-                p.point_collocation ?
-                  collocation_kernel(
-                    tet, tri, g, p.penalty, with_hessian, r.d) :
-                  penalty_kernel(tet, tri, g, p.penalty, with_hessian, r.d);
-              if (hit)
-                {
-                  r.t = t;
-                  r.k = k;
-                  ++c.n;
-                }
-            });
-        },
-        [&](const Copy &c) {
-          for (unsigned int i = 0; i < c.n; ++i)
-            f(c.results[i].t, c.results[i].k, c.results[i].d);
-        },
-        Scratch(),
-        Copy(),
-        MultithreadInfo::n_threads(),
-        8);
-    }
-
-
-    void
-    ContactAssembler::add_couplings(const Vector<double>   &u,
-                                    const double            margin,
-                                    DynamicSparsityPattern &dsp) const
-    {
-      if (pairs.empty())
-        return;
-      const std::vector<Point<3>> x = positions(u);
-      refit(x);
-      for_each_candidate(x,
-                         margin,
-                         [&](const unsigned int t,
-                             const unsigned int k,
-                             const BodyContact &) {
-                           const auto dofs = pair_dofs(t, k);
-                           for (const auto i : dofs)
-                             for (const auto j : dofs)
-                               dsp.add(i, j);
-                         });
-    }
-
-
-    bool
-    ContactAssembler::has_couplings(const Vector<double>  &u,
-                                    const SparsityPattern &pattern) const
-    {
-      if (pairs.empty())
-        return true;
-      const std::vector<Point<3>> x = positions(u);
-      refit(x);
-      // only pairs the assembly will add (nonzero energy) need couplings;
-      // add_couplings() adds whole 3 x 3 vertex blocks, so one entry per
-      // vertex pair tells
-      bool all = true;
-      for_each_candidate(
-        x,
-        0.,
-        [&](const unsigned int t, const unsigned int k, const BodyContact &p) {
-          if (!all)
-            return;
-          const auto [tet, tri, g] = pair_geometry(x, t, k);
-          if (*std::max_element(g.begin(), g.end()) <= 0.)
-            return;
-          const bool active =
-            p.point_collocation ?
-              collocation_energy<double>(tet, tri, g, p.penalty) > 0. :
-              penalty_energy<double>(tet, tri, g, p.penalty) > 0.;
-          if (!active)
-            return;
-          const auto dofs = pair_dofs(t, k);
-          for (unsigned int a = 0; a < 7 && all; ++a)
-            for (unsigned int b = 0; b < 7; ++b)
-              all = all && pattern.exists(dofs[3 * a], dofs[3 * b]);
-        });
-      return all;
-    }
-
-
-    double
-    ContactAssembler::max_body_penetration(const Vector<double> &u) const
-    {
-      double d_max = 0.;
-      for (const auto &[v, d] : body_penetrations(u))
-        d_max = std::max(d_max, d);
-      return d_max;
-    }
-
-
-    std::vector<std::pair<unsigned int, double>>
-    ContactAssembler::body_penetrations(const Vector<double> &u) const
-    {
-      if (pairs.empty())
-        return {};
-      const std::vector<Point<3>> x = positions(u);
-      refit(x);
-      std::map<unsigned int, double> depth_of;
-      for (const auto &p : pairs)
-        for (unsigned int t = 0; t < triangles.size(); ++t)
-          if (triangle_body[t] == p.surface_body)
-            for (const unsigned int v : triangles[t])
-              depth_of.emplace(v, 0.);
-      for_each_candidate(
-        x,
-        0.,
-        [&](const unsigned int t, const unsigned int k, const BodyContact &) {
-          const std::array<Point<3>, 4> tet = {
-            {x[tets[k][0]], x[tets[k][1]], x[tets[k][2]], x[tets[k][3]]}};
-          for (const unsigned int v : triangles[t])
-            {
-              const std::array<Point<3>, 3> point   = {{x[v], x[v], x[v]}};
-              const auto                    polygon = intersect(tet, point);
-              if (polygon.n_vertices == 0)
-                continue;
-              double g = 0.;
-              for (unsigned int j = 0; j < 4; ++j)
-                g += polygon.vertex[0].lambda[j] * depth[tets[k][j]];
-              depth_of[v] = std::max(depth_of[v], g);
-            }
-        });
-      return {depth_of.begin(), depth_of.end()};
+      std::vector<double> W;
+      for (const auto *i : interactions)
+        {
+          const std::vector<double> w = i->energies(u);
+          W.insert(W.end(), w.begin(), w.end());
+        }
+      return W;
     }
 
 
@@ -483,72 +60,68 @@ namespace TissueContact
     }
 
 
-    std::vector<double>
-    ContactAssembler::energies(const Vector<double> &u) const
+    void
+    ContactAssembler::add_couplings(const Vector<double>   &u,
+                                    const double            margin,
+                                    DynamicSparsityPattern &dsp) const
     {
-      std::vector<double> W(pairs.size() + obstacles.size(), 0.);
-      for (unsigned int t = 0; t < triangles.size(); ++t)
-        {
-          const std::array<Point<3>, 3> tri = {position(triangles[t][0], u),
-                                               position(triangles[t][1], u),
-                                               position(triangles[t][2], u)};
-          for (unsigned int i = 0; i < obstacles.size(); ++i)
-            {
-              const auto &o = obstacles[i];
-              if (o.bodies.empty() || o.bodies.count(triangle_body[t]) > 0)
-                W[pairs.size() + i] +=
-                  obstacle_energy<double>(o.obstacle, tri, o.penalty);
-            }
-        }
-      if (!pairs.empty())
-        {
-          const std::vector<Point<3>> x = positions(u);
-          refit(x);
-          for_each_candidate(
-            x,
-            0.,
-            [&](const unsigned int t,
-                const unsigned int k,
-                const BodyContact &p) {
-              const auto [tet, tri, g] = pair_geometry(x, t, k);
-              W[&p - pairs.data()] +=
-                p.point_collocation ?
-                  collocation_energy<double>(tet, tri, g, p.penalty) :
-                  penalty_energy<double>(tet, tri, g, p.penalty);
-            });
-        }
-      return W;
+      for (const auto *i : interactions)
+        i->add_couplings(u, margin, dsp);
+    }
+
+
+    bool
+    ContactAssembler::has_couplings(const Vector<double>  &u,
+                                    const SparsityPattern &pattern) const
+    {
+      for (const auto *i : interactions)
+        if (!i->has_couplings(u, pattern))
+          return false;
+      return true;
+    }
+
+
+    unsigned int
+    ContactAssembler::n_tree_rebuilds() const
+    {
+      return bodies ? bodies->n_tree_rebuilds() : 0;
+    }
+
+
+    const std::vector<double> &
+    ContactAssembler::vertex_depth() const
+    {
+      static const std::vector<double> none;
+      return bodies ? bodies->vertex_depth() : none;
+    }
+
+
+    double
+    ContactAssembler::max_body_penetration(const Vector<double> &u) const
+    {
+      return bodies ? bodies->max_penetration(u) : 0.;
+    }
+
+
+    std::vector<std::pair<unsigned int, double>>
+    ContactAssembler::body_penetrations(const Vector<double> &u) const
+    {
+      return bodies ? bodies->penetrations(u) :
+                      std::vector<std::pair<unsigned int, double>>();
     }
 
 
     Tensor<1, 3>
     ContactAssembler::obstacle_force(const Vector<double> &u) const
     {
-      Tensor<1, 3> force;
-      for_each_obstacle_contact(u,
-                                false,
-                                [&](const unsigned int,
-                                    const std::array<Point<3>, 3> &,
-                                    const ObstacleContact &,
-                                    const PairDerivatives &d) {
-                                  for (unsigned int a = 0; a < 3; ++a)
-                                    for (unsigned int c = 0; c < 3; ++c)
-                                      force[c] -= d.gradient[3 * a + c];
-                                });
-      return force;
+      return obstacles ? obstacles->force(u) : Tensor<1, 3>();
     }
 
 
     double
     ContactAssembler::max_obstacle_penetration(const Vector<double> &u) const
     {
-      double d = 0.;
-      for (unsigned int t = 0; t < triangles.size(); ++t)
-        for (const auto &o : obstacles)
-          if (o.bodies.empty() || o.bodies.count(triangle_body[t]) > 0)
-            for (const unsigned int v : triangles[t])
-              d = std::max(d, o.obstacle.penetration(position(v, u)));
-      return d;
+      return obstacles ? obstacles->max_penetration(u) : 0.;
     }
   } // namespace Contact
 } // namespace TissueContact

@@ -210,6 +210,408 @@ namespace TissueContact
     } // namespace
 
 
+    namespace
+    {
+      /** Stage 1 of the kernel: the m polygon vertices in closed form from
+       * their clipping labels (doc/theory/05-contact.md, sec. 5.1): a
+       * triangle vertex, a triangle edge cut by a tetrahedron face, or a
+       * tetrahedron edge cut by the triangle's plane; x = (1-s) x_P1 + s
+       * x_P2 and G = (1-s) G_1 + s G_2. */
+      void
+      polygon_vertices(const IntersectionPolygon<double> &polygon,
+                       const Points                      &x,
+                       const std::array<VertexDepth, 3>  &depth,
+                       const std::array<double, 4>       &g,
+                       std::array<VertexForm, 9>         &form)
+      {
+        const unsigned int m = polygon.n_vertices;
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            VertexForm  &v  = form[k];
+            unsigned int c1 = polygon.vertex[k].on[0],
+                         c2 = polygon.vertex[k].on[1];
+            if (c1 > c2)
+              std::swap(c1, c2);
+            if (c2 < 3)
+              {
+                // two triangle edges: a triangle vertex
+                const unsigned int t = (c2 == c1 + 1) ? c2 : 0;
+                v.P1 = v.P2 = 4 + t;
+                v.t1 = v.t2 = t;
+              }
+            else if (c1 < 3)
+              {
+                // triangle edge c1 cut by face i: s from D_i at its ends
+                const unsigned int ta = c1, tb = (c1 + 1) % 3, i = c2 - 3;
+                v.P1 = 4 + ta;
+                v.P2 = 4 + tb;
+                v.t1 = ta;
+                v.t2 = tb;
+                set_ratio(v, depth[ta].D[i], depth[tb].D[i]);
+              }
+            else
+              {
+                // faces i and j: the tetrahedron edge p q cut by the
+                // triangle's plane
+                unsigned int p = 4, q = 4;
+                for (unsigned int r = 0; r < 4; ++r)
+                  if (r != c1 - 3 && r != c2 - 3)
+                    (p == 4 ? p : q) = r;
+                v.P1 = p;
+                v.P2 = q;
+                v.G1 = g[p];
+                v.G2 = g[q];
+                set_ratio(v,
+                          orientation(x, {{4, 5, 6, p}}),
+                          orientation(x, {{4, 5, 6, q}}));
+              }
+            if (v.t1 < 3)
+              {
+                v.G1 = depth[v.t1].G;
+                v.G2 = depth[v.t2].G;
+              }
+            v.x = x[v.P1] + v.s * (x[v.P2] - x[v.P1]);
+            v.G = (1. - v.s) * v.G1 + v.s * v.G2;
+          }
+      }
+
+
+      /** The triangle's unit normal nu = N_T / |N_T| and, once the energy
+       * is known to be nonzero, its derivatives: N_T's in the triangle
+       * vertices M_X, dnu/dN_T = (I - nu nu^T) / |N_T| and dnu/dt_X. */
+      struct TriangleNormal
+      {
+        Tensor<1, 3>                nu;
+        double                      rT = 0.;
+        std::array<Tensor<2, 3>, 3> M;
+        Tensor<2, 3>                Pnu;
+        std::array<Tensor<2, 3>, 3> dnu;
+
+        explicit TriangleNormal(const std::array<Point<3>, 3> &tri)
+        {
+          const Tensor<1, 3> NT =
+            cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]);
+          rT = NT.norm();
+          nu = NT / rT;
+        }
+
+        void
+        derivatives(const std::array<Point<3>, 3> &tri)
+        {
+          M[1] = -cross_matrix(tri[2] - tri[0]);
+          M[2] = cross_matrix(tri[1] - tri[0]);
+          M[0] = -(M[1] + M[2]);
+          Pnu  = -outer_product(nu, nu);
+          for (unsigned int d = 0; d < 3; ++d)
+            Pnu[d][d] += 1.;
+          Pnu /= rT;
+          for (unsigned int X = 0; X < 3; ++X)
+            dnu[X] = Pnu * M[X];
+        }
+      };
+
+
+      /** Stage 2: the fan integral W = c sum_k l_k Q_k, l_k = n_k . nu, and
+       * its gradient w and Hessian HP in the primitives: (x, G) of each
+       * polygon vertex (4 per vertex), then nu (3). */
+      struct FanIntegral
+      {
+        unsigned int                           m = 0, inu = 0, np = 0;
+        double                                 energy = 0.;
+        std::array<double, 39>                 w{};
+        std::array<std::array<double, 39>, 39> HP;
+      };
+
+      void
+      fan_integral(const std::array<VertexForm, 9> &form,
+                   const unsigned int               m,
+                   const TriangleNormal            &normal,
+                   const double                     eps_p,
+                   const bool                       with_hessian,
+                   FanIntegral                     &fan)
+      {
+        const Tensor<1, 3> &nu = normal.nu;
+        const double        c  = eps_p / 24.;
+        fan.m                  = m;
+        fan.inu                = 4 * m;
+        fan.np                 = 4 * m + 3;
+        const unsigned int inu = fan.inu, np = fan.np;
+        auto              &w      = fan.w;
+        auto              &HP     = fan.HP;
+        double            &energy = fan.energy;
+        if (with_hessian)
+          for (unsigned int a = 0; a < np; ++a)
+            std::fill(HP[a].begin(), HP[a].begin() + np, 0.);
+        for (unsigned int k = 1; k + 1 < m; ++k)
+          {
+            const std::array<unsigned int, 3> vtx = {{0, k, k + 1}};
+            const Tensor<1, 3>                e1  = form[k].x - form[0].x,
+                               e2                 = form[k + 1].x - form[0].x;
+            const Tensor<1, 3> nk                 = cross_product_3d(e1, e2);
+            const double       l                  = nk * nu;
+            const double GA = form[0].G, GB = form[k].G, GC = form[k + 1].G;
+            const double Q =
+              GA * GA + GB * GB + GC * GC + GA * GB + GB * GC + GC * GA;
+            const std::array<double, 3> dQ = {
+              {2 * GA + GB + GC, 2 * GB + GA + GC, 2 * GC + GA + GB}};
+            energy += c * l * Q;
+            // dl/dx_X = N_X^T nu with N_X = dn_k/dx_X
+            std::array<Tensor<1, 3>, 3> dl;
+            dl[1] = cross_product_3d(e2, nu);
+            dl[2] = cross_product_3d(nu, e1);
+            dl[0] = -(dl[1] + dl[2]);
+            for (unsigned int X = 0; X < 3; ++X)
+              {
+                for (unsigned int d = 0; d < 3; ++d)
+                  w[4 * vtx[X] + d] += c * Q * dl[X][d];
+                w[4 * vtx[X] + 3] += c * l * dQ[X];
+              }
+            for (unsigned int d = 0; d < 3; ++d)
+              w[inu + d] += c * Q * nk[d];
+            if (!with_hessian)
+              continue;
+            std::array<Tensor<2, 3>, 3> Nx;
+            Nx[1] = -cross_matrix(e2);
+            Nx[2] = cross_matrix(e1);
+            Nx[0] = -(Nx[1] + Nx[2]);
+            // l is bilinear in (e1, e2): d2l = nu . (de1 x de2), the blocks
+            // (A,B), (B,C), (C,A) are -[nu]_x, their transposes [nu]_x
+            const Tensor<2, 3> Bm = -cross_matrix(nu);
+            for (unsigned int X = 0; X < 3; ++X)
+              {
+                const unsigned int i = 4 * vtx[X];
+                for (unsigned int Y = 0; Y < 3; ++Y)
+                  {
+                    const unsigned int j    = 4 * vtx[Y];
+                    const double       sign = (Y + 3 - X) % 3 == 1 ? 1. :
+                                              (X + 3 - Y) % 3 == 1 ? -1. :
+                                                                     0.;
+                    for (unsigned int p = 0; p < 3; ++p)
+                      {
+                        if (sign != 0.)
+                          for (unsigned int q = 0; q < 3; ++q)
+                            HP[i + p][j + q] += sign * c * Q * Bm[p][q];
+                        HP[i + p][j + 3] += c * dl[X][p] * dQ[Y];
+                        HP[j + 3][i + p] += c * dl[X][p] * dQ[Y];
+                      }
+                    HP[i + 3][j + 3] += c * l * (X == Y ? 2. : 1.);
+                  }
+                // (x_X, nu): c Q N_X^T; (G_X, nu): c dQ_X n_k
+                for (unsigned int p = 0; p < 3; ++p)
+                  for (unsigned int q = 0; q < 3; ++q)
+                    {
+                      HP[i + p][inu + q] += c * Q * Nx[X][q][p];
+                      HP[inu + q][i + p] += c * Q * Nx[X][q][p];
+                    }
+                for (unsigned int q = 0; q < 3; ++q)
+                  {
+                    HP[i + 3][inu + q] += c * dQ[X] * nk[q];
+                    HP[inu + q][i + 3] += c * dQ[X] * nk[q];
+                  }
+              }
+          }
+      }
+
+
+      /** The weights the chain rule needs twice: omega_t of the depths G_t
+       * of the triangle vertices and sigma_k = dW/ds_k of the cut ratios. */
+      struct ChainWeights
+      {
+        std::array<double, 3> omega{};
+        std::array<double, 9> sigma{};
+      };
+
+      /** Stage 3: the gradient in the 21 coordinates by the chain rule
+       * through the polygon vertices, the depths G_t and the normal. */
+      void
+      chain_gradient(const std::array<VertexForm, 9>  &form,
+                     const Points                     &x,
+                     const std::array<VertexDepth, 3> &depth,
+                     const TriangleNormal             &normal,
+                     const FanIntegral                &fan,
+                     ChainWeights                     &cw,
+                     Vec                              &grad)
+      {
+        const unsigned int m = fan.m, inu = fan.inu;
+        const auto        &w     = fan.w;
+        auto              &omega = cw.omega;
+        auto              &sigma = cw.sigma;
+        const auto        &dnu   = normal.dnu;
+        grad.fill(0.);
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            const VertexForm &v = form[k];
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                grad[3 * v.P1 + d] += (1. - v.s) * w[4 * k + d];
+                grad[3 * v.P2 + d] += v.s * w[4 * k + d];
+              }
+            const double wG = w[4 * k + 3];
+            if (v.t1 < 3)
+              {
+                omega[v.t1] += (1. - v.s) * wG;
+                omega[v.t2] += v.s * wG;
+              }
+            if (v.s_varies)
+              {
+                sigma[k] = wG * (v.G2 - v.G1);
+                for (unsigned int d = 0; d < 3; ++d)
+                  sigma[k] += w[4 * k + d] * (x[v.P2][d] - x[v.P1][d]);
+                for (unsigned int i = 0; i < n; ++i)
+                  grad[i] += sigma[k] * v.grad_s[i];
+              }
+          }
+        for (unsigned int t = 0; t < 3; ++t)
+          if (omega[t] != 0.)
+            for (unsigned int i = 0; i < n; ++i)
+              grad[i] += omega[t] * depth[t].grad_G[i];
+        const Tensor<1, 3> w_nu({w[inu], w[inu + 1], w[inu + 2]});
+        for (unsigned int X = 0; X < 3; ++X)
+          {
+            const Tensor<1, 3> gX = transpose(dnu[X]) * w_nu;
+            for (unsigned int d = 0; d < 3; ++d)
+              grad[3 * (4 + X) + d] += gX[d];
+          }
+      }
+
+
+      /** Stage 4: the Hessian, J^T HP J (J: d primitive / d coordinate)
+       * plus the first-derivative terms of the cut ratios, the depths and
+       * the normal. */
+      void
+      chain_hessian(const std::array<VertexForm, 9>  &form,
+                    const Points                     &x,
+                    const Orientation                &V,
+                    const std::array<VertexDepth, 3> &depth,
+                    const std::array<double, 4>      &g,
+                    const TriangleNormal             &normal,
+                    const FanIntegral                &fan,
+                    const ChainWeights               &cw,
+                    Mat                              &H)
+      {
+        const unsigned int m = fan.m, inu = fan.inu, np = fan.np;
+        const auto        &w     = fan.w;
+        const auto        &HP    = fan.HP;
+        const auto        &omega = cw.omega;
+        const auto        &sigma = cw.sigma;
+        const auto        &nu    = normal.nu;
+        const double       rT    = normal.rT;
+        const auto        &M     = normal.M;
+        const auto        &Pnu   = normal.Pnu;
+        const auto        &dnu   = normal.dnu;
+        const Tensor<1, 3> w_nu({w[inu], w[inu + 1], w[inu + 2]});
+        // J: d(primitive)/d(coordinate)
+        std::array<Vec, 39> J;
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            const VertexForm &v = form[k];
+            for (unsigned int d = 0; d < 4; ++d)
+              J[4 * k + d].fill(0.);
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                J[4 * k + d][3 * v.P1 + d] += 1. - v.s;
+                J[4 * k + d][3 * v.P2 + d] += v.s;
+              }
+            Vec &JG = J[4 * k + 3];
+            if (v.t1 < 3)
+              for (unsigned int i = 0; i < n; ++i)
+                JG[i] = (1. - v.s) * depth[v.t1].grad_G[i] +
+                        v.s * depth[v.t2].grad_G[i];
+            if (v.s_varies)
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  for (unsigned int d = 0; d < 3; ++d)
+                    J[4 * k + d][i] += (x[v.P2][d] - x[v.P1][d]) * v.grad_s[i];
+                  JG[i] += (v.G2 - v.G1) * v.grad_s[i];
+                }
+          }
+        for (unsigned int q = 0; q < 3; ++q)
+          {
+            J[inu + q].fill(0.);
+            for (unsigned int X = 0; X < 3; ++X)
+              for (unsigned int d = 0; d < 3; ++d)
+                J[inu + q][3 * (4 + X) + d] = dnu[X][q][d];
+          }
+
+        // H = J^T HP J
+        std::array<Vec, 39> K; // HP J
+        for (unsigned int a = 0; a < np; ++a)
+          {
+            K[a].fill(0.);
+            for (unsigned int b = 0; b < np; ++b)
+              if (HP[a][b] != 0.)
+                for (unsigned int i = 0; i < n; ++i)
+                  K[a][i] += HP[a][b] * J[b][i];
+          }
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = i; j < n; ++j)
+            {
+              double h = 0.;
+              for (unsigned int a = 0; a < np; ++a)
+                h += J[a][i] * K[a][j];
+              H[i][j] = H[j][i] = h;
+            }
+
+        // + sum_k (dW/dprimitive_k) Hess(primitive_k): the cut ratios s
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            const VertexForm &v = form[k];
+            if (!v.s_varies)
+              continue;
+            // sigma Hess s
+            add_hessian(H, x, v.a, sigma[k] * v.s_a);
+            add_hessian(H, x, v.b, sigma[k] * v.s_b);
+            Vec ga{}, gb{};
+            add_gradient(ga, v.a, 1.);
+            add_gradient(gb, v.b, 1.);
+            add_symmetric_outer(H, ga, ga, 0.5 * sigma[k] * v.s_aa);
+            add_symmetric_outer(H, ga, gb, sigma[k] * v.s_ab);
+            add_symmetric_outer(H, gb, gb, 0.5 * sigma[k] * v.s_bb);
+            // sym(grad s (x) r), r = d sigma / d(coordinates) at fixed s
+            Vec          r{};
+            const double wG = w[4 * k + 3];
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                r[3 * v.P2 + d] += w[4 * k + d];
+                r[3 * v.P1 + d] -= w[4 * k + d];
+              }
+            if (v.t1 < 3)
+              for (unsigned int i = 0; i < n; ++i)
+                r[i] += wG * (depth[v.t2].grad_G[i] - depth[v.t1].grad_G[i]);
+            add_symmetric_outer(H, v.grad_s, r, 1.);
+          }
+        // + sum_t omega_t Hess G_t, G_t = N_t / V
+        for (unsigned int t = 0; t < 3; ++t)
+          if (omega[t] != 0.)
+            add_depth_hessian(H, x, V, depth[t], g, omega[t]);
+        // + Hess(w_nu . nu): with phi(N) = w_nu . N / |N|, p = dphi/dN,
+        // M^T (d2phi/dN2) M + the bilinear part p . (dE1 x dE2)
+        {
+          const Tensor<1, 3> p   = Pnu * w_nu;
+          const double       wn  = w_nu * nu;
+          Tensor<2, 3>       Phi = 3. * wn * outer_product(nu, nu) -
+                             outer_product(w_nu, nu) - outer_product(nu, w_nu);
+          for (unsigned int d = 0; d < 3; ++d)
+            Phi[d][d] -= wn;
+          Phi /= rT * rT;
+          const Tensor<2, 3> Bp = -cross_matrix(p);
+          for (unsigned int X = 0; X < 3; ++X)
+            for (unsigned int Y = 0; Y < 3; ++Y)
+              {
+                Tensor<2, 3> block = transpose(M[X]) * Phi * M[Y];
+                if ((Y + 3 - X) % 3 == 1)
+                  block += Bp;
+                else if ((X + 3 - Y) % 3 == 1)
+                  block -= Bp;
+                for (unsigned int a = 0; a < 3; ++a)
+                  for (unsigned int b = 0; b < 3; ++b)
+                    H[3 * (4 + X) + a][3 * (4 + Y) + b] += block[a][b];
+              }
+        }
+      }
+    } // namespace
+
+
     bool
     penalty_kernel(const std::array<Point<3>, 4> &tet,
                    const std::array<Point<3>, 3> &tri,
@@ -230,310 +632,20 @@ namespace TissueContact
       const std::array<VertexDepth, 3> depth = {{vertex_depth(x, V, g, 0),
                                                  vertex_depth(x, V, g, 1),
                                                  vertex_depth(x, V, g, 2)}};
-
-      // the polygon vertices in closed form, from their labels
+      // clip labels -> polygon vertices -> fan integral -> chain rule
       std::array<VertexForm, 9> form;
-      for (unsigned int k = 0; k < m; ++k)
-        {
-          VertexForm  &v  = form[k];
-          unsigned int c1 = polygon.vertex[k].on[0],
-                       c2 = polygon.vertex[k].on[1];
-          if (c1 > c2)
-            std::swap(c1, c2);
-          if (c2 < 3)
-            {
-              // two triangle edges: a triangle vertex
-              const unsigned int t = (c2 == c1 + 1) ? c2 : 0;
-              v.P1 = v.P2 = 4 + t;
-              v.t1 = v.t2 = t;
-            }
-          else if (c1 < 3)
-            {
-              // triangle edge c1 cut by face i: s from D_i at its ends
-              const unsigned int ta = c1, tb = (c1 + 1) % 3, i = c2 - 3;
-              v.P1 = 4 + ta;
-              v.P2 = 4 + tb;
-              v.t1 = ta;
-              v.t2 = tb;
-              set_ratio(v, depth[ta].D[i], depth[tb].D[i]);
-            }
-          else
-            {
-              // faces i and j: the tetrahedron edge p q cut by the
-              // triangle's plane
-              unsigned int p = 4, q = 4;
-              for (unsigned int r = 0; r < 4; ++r)
-                if (r != c1 - 3 && r != c2 - 3)
-                  (p == 4 ? p : q) = r;
-              v.P1 = p;
-              v.P2 = q;
-              v.G1 = g[p];
-              v.G2 = g[q];
-              set_ratio(v,
-                        orientation(x, {{4, 5, 6, p}}),
-                        orientation(x, {{4, 5, 6, q}}));
-            }
-          if (v.t1 < 3)
-            {
-              v.G1 = depth[v.t1].G;
-              v.G2 = depth[v.t2].G;
-            }
-          v.x = x[v.P1] + v.s * (x[v.P2] - x[v.P1]);
-          v.G = (1. - v.s) * v.G1 + v.s * v.G2;
-        }
-
-      // level 1: the fan integral W = c sum_k l_k Q_k, l_k = n_k . nu, in
-      // the primitives: (x, G) of each polygon vertex, 4 per vertex, then
-      // the triangle's unit normal nu (3)
-      const double       c   = eps_p / 24.;
-      const unsigned int inu = 4 * m, np = 4 * m + 3;
-      const Tensor<1, 3> NT =
-        cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]);
-      const double                           rT = NT.norm();
-      const Tensor<1, 3>                     nu = NT / rT;
-      std::array<double, 39>                 w{};
-      std::array<std::array<double, 39>, 39> HP;
-      if (with_hessian)
-        for (unsigned int a = 0; a < np; ++a)
-          std::fill(HP[a].begin(), HP[a].begin() + np, 0.);
-      double energy = 0.;
-      for (unsigned int k = 1; k + 1 < m; ++k)
-        {
-          const std::array<unsigned int, 3> vtx = {{0, k, k + 1}};
-          const Tensor<1, 3>                e1  = form[k].x - form[0].x,
-                             e2                 = form[k + 1].x - form[0].x;
-          const Tensor<1, 3> nk                 = cross_product_3d(e1, e2);
-          const double       l                  = nk * nu;
-          const double       GA = form[0].G, GB = form[k].G, GC = form[k + 1].G;
-          const double       Q =
-            GA * GA + GB * GB + GC * GC + GA * GB + GB * GC + GC * GA;
-          const std::array<double, 3> dQ = {
-            {2 * GA + GB + GC, 2 * GB + GA + GC, 2 * GC + GA + GB}};
-          energy += c * l * Q;
-          // dl/dx_X = N_X^T nu with N_X = dn_k/dx_X
-          std::array<Tensor<1, 3>, 3> dl;
-          dl[1] = cross_product_3d(e2, nu);
-          dl[2] = cross_product_3d(nu, e1);
-          dl[0] = -(dl[1] + dl[2]);
-          for (unsigned int X = 0; X < 3; ++X)
-            {
-              for (unsigned int d = 0; d < 3; ++d)
-                w[4 * vtx[X] + d] += c * Q * dl[X][d];
-              w[4 * vtx[X] + 3] += c * l * dQ[X];
-            }
-          for (unsigned int d = 0; d < 3; ++d)
-            w[inu + d] += c * Q * nk[d];
-          if (!with_hessian)
-            continue;
-          std::array<Tensor<2, 3>, 3> Nx;
-          Nx[1] = -cross_matrix(e2);
-          Nx[2] = cross_matrix(e1);
-          Nx[0] = -(Nx[1] + Nx[2]);
-          // l is bilinear in (e1, e2): d2l = nu . (de1 x de2), the blocks
-          // (A,B), (B,C), (C,A) are -[nu]_x, their transposes [nu]_x
-          const Tensor<2, 3> Bm = -cross_matrix(nu);
-          for (unsigned int X = 0; X < 3; ++X)
-            {
-              const unsigned int i = 4 * vtx[X];
-              for (unsigned int Y = 0; Y < 3; ++Y)
-                {
-                  const unsigned int j    = 4 * vtx[Y];
-                  const double       sign = (Y + 3 - X) % 3 == 1 ? 1. :
-                                            (X + 3 - Y) % 3 == 1 ? -1. :
-                                                                   0.;
-                  for (unsigned int p = 0; p < 3; ++p)
-                    {
-                      if (sign != 0.)
-                        for (unsigned int q = 0; q < 3; ++q)
-                          HP[i + p][j + q] += sign * c * Q * Bm[p][q];
-                      HP[i + p][j + 3] += c * dl[X][p] * dQ[Y];
-                      HP[j + 3][i + p] += c * dl[X][p] * dQ[Y];
-                    }
-                  HP[i + 3][j + 3] += c * l * (X == Y ? 2. : 1.);
-                }
-              // (x_X, nu): c Q N_X^T; (G_X, nu): c dQ_X n_k
-              for (unsigned int p = 0; p < 3; ++p)
-                for (unsigned int q = 0; q < 3; ++q)
-                  {
-                    HP[i + p][inu + q] += c * Q * Nx[X][q][p];
-                    HP[inu + q][i + p] += c * Q * Nx[X][q][p];
-                  }
-              for (unsigned int q = 0; q < 3; ++q)
-                {
-                  HP[i + 3][inu + q] += c * dQ[X] * nk[q];
-                  HP[inu + q][i + 3] += c * dQ[X] * nk[q];
-                }
-            }
-        }
-      if (!(energy > 0.))
+      polygon_vertices(polygon, x, depth, g, form);
+      TriangleNormal normal(tri);
+      FanIntegral    fan;
+      fan_integral(form, m, normal, eps_p, with_hessian, fan);
+      if (!(fan.energy > 0.))
         return false;
-      result.energy = energy;
-
-      // nu = N_T / |N_T|: dnu/dN = (I - nu nu^T) / r_T, and N_T's
-      // derivatives in the triangle vertices M_X (points 4, 5, 6)
-      std::array<Tensor<2, 3>, 3> M;
-      M[1]             = -cross_matrix(tri[2] - tri[0]);
-      M[2]             = cross_matrix(tri[1] - tri[0]);
-      M[0]             = -(M[1] + M[2]);
-      Tensor<2, 3> Pnu = -outer_product(nu, nu);
-      for (unsigned int d = 0; d < 3; ++d)
-        Pnu[d][d] += 1.;
-      Pnu /= rT;
-      std::array<Tensor<2, 3>, 3> dnu; // dnu/dt_X
-      for (unsigned int X = 0; X < 3; ++X)
-        dnu[X] = Pnu * M[X];
-
-      // level 2: chain to the 21 coordinates
-      Vec &grad = result.gradient;
-      grad.fill(0.);
-      std::array<double, 3> omega{}; // weights of the depths G_t
-      std::array<double, 9> sigma{};
-      for (unsigned int k = 0; k < m; ++k)
-        {
-          const VertexForm &v = form[k];
-          for (unsigned int d = 0; d < 3; ++d)
-            {
-              grad[3 * v.P1 + d] += (1. - v.s) * w[4 * k + d];
-              grad[3 * v.P2 + d] += v.s * w[4 * k + d];
-            }
-          const double wG = w[4 * k + 3];
-          if (v.t1 < 3)
-            {
-              omega[v.t1] += (1. - v.s) * wG;
-              omega[v.t2] += v.s * wG;
-            }
-          if (v.s_varies)
-            {
-              sigma[k] = wG * (v.G2 - v.G1);
-              for (unsigned int d = 0; d < 3; ++d)
-                sigma[k] += w[4 * k + d] * (x[v.P2][d] - x[v.P1][d]);
-              for (unsigned int i = 0; i < n; ++i)
-                grad[i] += sigma[k] * v.grad_s[i];
-            }
-        }
-      for (unsigned int t = 0; t < 3; ++t)
-        if (omega[t] != 0.)
-          for (unsigned int i = 0; i < n; ++i)
-            grad[i] += omega[t] * depth[t].grad_G[i];
-      const Tensor<1, 3> w_nu({w[inu], w[inu + 1], w[inu + 2]});
-      for (unsigned int X = 0; X < 3; ++X)
-        {
-          const Tensor<1, 3> gX = transpose(dnu[X]) * w_nu;
-          for (unsigned int d = 0; d < 3; ++d)
-            grad[3 * (4 + X) + d] += gX[d];
-        }
-      if (!with_hessian)
-        return true;
-
-      // J: d(primitive)/d(coordinate)
-      std::array<Vec, 39> J;
-      for (unsigned int k = 0; k < m; ++k)
-        {
-          const VertexForm &v = form[k];
-          for (unsigned int d = 0; d < 4; ++d)
-            J[4 * k + d].fill(0.);
-          for (unsigned int d = 0; d < 3; ++d)
-            {
-              J[4 * k + d][3 * v.P1 + d] += 1. - v.s;
-              J[4 * k + d][3 * v.P2 + d] += v.s;
-            }
-          Vec &JG = J[4 * k + 3];
-          if (v.t1 < 3)
-            for (unsigned int i = 0; i < n; ++i)
-              JG[i] = (1. - v.s) * depth[v.t1].grad_G[i] +
-                      v.s * depth[v.t2].grad_G[i];
-          if (v.s_varies)
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                for (unsigned int d = 0; d < 3; ++d)
-                  J[4 * k + d][i] += (x[v.P2][d] - x[v.P1][d]) * v.grad_s[i];
-                JG[i] += (v.G2 - v.G1) * v.grad_s[i];
-              }
-        }
-      for (unsigned int q = 0; q < 3; ++q)
-        {
-          J[inu + q].fill(0.);
-          for (unsigned int X = 0; X < 3; ++X)
-            for (unsigned int d = 0; d < 3; ++d)
-              J[inu + q][3 * (4 + X) + d] = dnu[X][q][d];
-        }
-
-      // H = J^T HP J
-      Mat                &H = result.hessian;
-      std::array<Vec, 39> K; // HP J
-      for (unsigned int a = 0; a < np; ++a)
-        {
-          K[a].fill(0.);
-          for (unsigned int b = 0; b < np; ++b)
-            if (HP[a][b] != 0.)
-              for (unsigned int i = 0; i < n; ++i)
-                K[a][i] += HP[a][b] * J[b][i];
-        }
-      for (unsigned int i = 0; i < n; ++i)
-        for (unsigned int j = i; j < n; ++j)
-          {
-            double h = 0.;
-            for (unsigned int a = 0; a < np; ++a)
-              h += J[a][i] * K[a][j];
-            H[i][j] = H[j][i] = h;
-          }
-
-      // + sum_k (dW/dprimitive_k) Hess(primitive_k): the cut ratios s
-      for (unsigned int k = 0; k < m; ++k)
-        {
-          const VertexForm &v = form[k];
-          if (!v.s_varies)
-            continue;
-          // sigma Hess s
-          add_hessian(H, x, v.a, sigma[k] * v.s_a);
-          add_hessian(H, x, v.b, sigma[k] * v.s_b);
-          Vec ga{}, gb{};
-          add_gradient(ga, v.a, 1.);
-          add_gradient(gb, v.b, 1.);
-          add_symmetric_outer(H, ga, ga, 0.5 * sigma[k] * v.s_aa);
-          add_symmetric_outer(H, ga, gb, sigma[k] * v.s_ab);
-          add_symmetric_outer(H, gb, gb, 0.5 * sigma[k] * v.s_bb);
-          // sym(grad s (x) r), r = d sigma / d(coordinates) at fixed s
-          Vec          r{};
-          const double wG = w[4 * k + 3];
-          for (unsigned int d = 0; d < 3; ++d)
-            {
-              r[3 * v.P2 + d] += w[4 * k + d];
-              r[3 * v.P1 + d] -= w[4 * k + d];
-            }
-          if (v.t1 < 3)
-            for (unsigned int i = 0; i < n; ++i)
-              r[i] += wG * (depth[v.t2].grad_G[i] - depth[v.t1].grad_G[i]);
-          add_symmetric_outer(H, v.grad_s, r, 1.);
-        }
-      // + sum_t omega_t Hess G_t, G_t = N_t / V
-      for (unsigned int t = 0; t < 3; ++t)
-        if (omega[t] != 0.)
-          add_depth_hessian(H, x, V, depth[t], g, omega[t]);
-      // + Hess(w_nu . nu): with phi(N) = w_nu . N / |N|, p = dphi/dN,
-      // M^T (d2phi/dN2) M + the bilinear part p . (dE1 x dE2)
-      {
-        const Tensor<1, 3> p   = Pnu * w_nu;
-        const double       wn  = w_nu * nu;
-        Tensor<2, 3>       Phi = 3. * wn * outer_product(nu, nu) -
-                           outer_product(w_nu, nu) - outer_product(nu, w_nu);
-        for (unsigned int d = 0; d < 3; ++d)
-          Phi[d][d] -= wn;
-        Phi /= rT * rT;
-        const Tensor<2, 3> Bp = -cross_matrix(p);
-        for (unsigned int X = 0; X < 3; ++X)
-          for (unsigned int Y = 0; Y < 3; ++Y)
-            {
-              Tensor<2, 3> block = transpose(M[X]) * Phi * M[Y];
-              if ((Y + 3 - X) % 3 == 1)
-                block += Bp;
-              else if ((X + 3 - Y) % 3 == 1)
-                block -= Bp;
-              for (unsigned int a = 0; a < 3; ++a)
-                for (unsigned int b = 0; b < 3; ++b)
-                  H[3 * (4 + X) + a][3 * (4 + Y) + b] += block[a][b];
-            }
-      }
+      result.energy = fan.energy;
+      normal.derivatives(tri);
+      ChainWeights cw;
+      chain_gradient(form, x, depth, normal, fan, cw, result.gradient);
+      if (with_hessian)
+        chain_hessian(form, x, V, depth, g, normal, fan, cw, result.hessian);
       return true;
     }
 

@@ -12,6 +12,7 @@
 
 #include "../tests.h"
 
+#include <tissue_contact/contact/ad_reference.h>
 #include <tissue_contact/contact/penalty_energy.h>
 #include <tissue_contact/contact/penalty_kernel.h>
 #include <tissue_contact/contact/point_collocation.h>
@@ -22,6 +23,37 @@ using namespace TissueContactTests;
 
 namespace
 {
+  /** The automatic-differentiation references of the two pair energies. */
+  Contact::PairDerivatives
+  penalty_ad(const std::array<Point<3>, 4> &tet,
+             const std::array<Point<3>, 3> &tri,
+             const std::array<double, 4>   &g,
+             const double                   eps_p)
+  {
+    return Contact::ad_derivatives(
+      [&](const auto &K, const auto &T) {
+        return Contact::penalty_energy(K, T, g, eps_p);
+      },
+      true,
+      tet,
+      tri);
+  }
+
+  Contact::PairDerivatives
+  collocation_ad(const std::array<Point<3>, 4> &tet,
+                 const std::array<Point<3>, 3> &tri,
+                 const std::array<double, 4>   &g,
+                 const double                   eps_p)
+  {
+    return Contact::ad_derivatives(
+      [&](const auto &K, const auto &T) {
+        return Contact::collocation_energy(K, T, g, eps_p);
+      },
+      true,
+      tet,
+      tri);
+  }
+
   using Tet = std::array<Point<3>, 4>;
   using Tri = std::array<Point<3>, 3>;
 
@@ -82,7 +114,7 @@ namespace
       tet[v] = Point<3>(c[3 * v], c[3 * v + 1], c[3 * v + 2]);
     for (unsigned v = 0; v < 3; ++v)
       tri[v] = Point<3>(c[12 + 3 * v], c[13 + 3 * v], c[14 + 3 * v]);
-    return Contact::penalty_derivatives_ad(tet, tri, g, 10.);
+    return penalty_ad(tet, tri, g, 10.);
   }
 
   /** The hand-derived kernel, in the reference's storage. */
@@ -433,12 +465,12 @@ namespace
     unsigned int n_cut = 0;
     while (n_cut < 300)
       {
-        const Tet  tet = random_tet();
-        const Tri  tri = {random_point(0.8),
-                          random_point(0.8),
-                          random_point(0.8)};
-        const auto g   = random_depths();
-        const auto ad  = Contact::collocation_derivatives_ad(tet, tri, g, 10.);
+        const Tet           tet = random_tet();
+        const Tri           tri = {random_point(0.8),
+                                   random_point(0.8),
+                                   random_point(0.8)};
+        const auto          g   = random_depths();
+        const auto          ad  = collocation_ad(tet, tri, g, 10.);
         Contact::PairKernel k;
         const bool hit = Contact::collocation_kernel(tet, tri, g, 10., true, k);
         if (!(ad.energy > 0.) && !hit)
@@ -511,9 +543,8 @@ namespace
             area   = 0.;
             for (const auto &[tet, g] : tets)
               {
-                const auto d =
-                  Contact::penalty_derivatives_ad(tet, tri, g, 10.);
-                finite = finite && std::isfinite(d.energy) &&
+                const auto d = penalty_ad(tet, tri, g, 10.);
+                finite       = finite && std::isfinite(d.energy) &&
                          std::isfinite(d.gradient.l2_norm()) &&
                          std::isfinite(d.hessian.frobenius_norm());
                 energy += d.energy;

@@ -9,6 +9,7 @@
 //   cmake --build build --target performance
 //   build/tests/performance/contact_throughput
 
+#include <tissue_contact/contact/ad_reference.h>
 #include <tissue_contact/contact/bounding_volume_tree.h>
 #include <tissue_contact/contact/material_depth.h>
 #include <tissue_contact/contact/penalty_energy.h>
@@ -144,7 +145,13 @@ main(int argc, char **argv)
       for (unsigned int i = 0; i < n_ad; ++i)
         {
           const auto [tet, tri, g] = pair(cutting[i]);
-          sink += Contact::penalty_derivatives_ad(tet, tri, g, 1., true)
+          sink += Contact::ad_derivatives(
+                    [&](const auto &K, const auto &T) {
+                      return Contact::penalty_energy(K, T, g, 1.);
+                    },
+                    true,
+                    tet,
+                    tri)
                     .hessian(0, 0);
         }
       const double ad_gH = n_ad / timer.wall_time();

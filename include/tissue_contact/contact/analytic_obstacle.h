@@ -92,12 +92,5 @@ namespace TissueContact
       return 0.5 * eps_p * integral_of_square(x, d, n, unit_normal(tri));
     }
 
-    /** obstacle_energy() with its gradient and Hessian with respect to the
-     * 9 triangle vertex coordinates (automatic differentiation). */
-    PairDerivatives
-    obstacle_derivatives_ad(const AnalyticObstacle        &obstacle,
-                            const std::array<Point<3>, 3> &tri,
-                            const double                   eps_p,
-                            const bool                     with_hessian = true);
   } // namespace Contact
 } // namespace TissueContact

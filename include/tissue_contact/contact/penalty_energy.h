@@ -3,13 +3,6 @@
 #include <tissue_contact/contact/triangle_tetrahedron_intersection.h>
 
 #include <deal.II/differentiation/ad/ad_number_traits.h>
-#include <deal.II/differentiation/ad/sacado_number_types.h>
-#include <deal.II/differentiation/ad/sacado_product_types.h>
-#include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/vector.h>
-
-#include <functional>
-#include <vector>
 
 namespace TissueContact
 {
@@ -95,87 +88,5 @@ namespace TissueContact
     intersection_area(const std::array<Point<3>, 4> &tet,
                       const std::array<Point<3>, 3> &tri);
 
-    /**
-     * Energy, gradient (21 entries: the 4 tetrahedron vertices, then the 3
-     * triangle vertices, x y z each) and Hessian (21 x 21) of
-     * penalty_energy(), exact derivatives of the discrete energy by
-     * automatic differentiation (Sacado, forward over forward, through
-     * deal.II's Differentiation::AD). The reference kernel.
-     */
-    struct PairDerivatives
-    {
-      double             energy = 0.;
-      Vector<double>     gradient;
-      FullMatrix<double> hessian;
-    };
-
-    /** The number type of the reference derivatives: Sacado forward mode
-     * over forward mode, exact first and second derivatives. */
-    using ADNumber = Differentiation::AD::NumberTraits<
-      double,
-      Differentiation::AD::NumberTypes::sacado_dfad_dfad>::ad_type;
-
-    /** Value, gradient and Hessian of @p energy at @p coordinates by
-     * automatic differentiation (deal.II's Differentiation::AD helper). */
-    PairDerivatives
-    differentiate(
-      const std::vector<double>                                    &coordinates,
-      const std::function<ADNumber(const std::vector<ADNumber> &)> &energy);
-
-    /** First-order AD number: gradients only (the residual). */
-    using ADNumber1 = Differentiation::AD::NumberTraits<
-      double,
-      Differentiation::AD::NumberTypes::sacado_dfad>::ad_type;
-
-    /** Value and gradient only (hessian left empty), by first-order AD:
-     * about n times cheaper than differentiate() for n coordinates. */
-    PairDerivatives
-    differentiate_once(
-      const std::vector<double> &coordinates,
-      const std::function<ADNumber1(const std::vector<ADNumber1> &)> &energy);
-
-    /**
-     * Value, gradient and (if @p with_hessian) Hessian with respect to the
-     * 21 coordinates (tetrahedron vertices, then triangle vertices) of a
-     * pair energy @p energy(tet, tri), a generic callable templated on the
-     * number type, by automatic differentiation.
-     */
-    template <typename PairEnergy>
-    PairDerivatives
-    differentiate_pair(const std::array<Point<3>, 4> &tet,
-                       const std::array<Point<3>, 3> &tri,
-                       const bool                     with_hessian,
-                       const PairEnergy              &energy)
-    {
-      std::vector<double> coordinates;
-      for (const auto &p : tet)
-        for (unsigned int d = 0; d < 3; ++d)
-          coordinates.push_back(p[d]);
-      for (const auto &p : tri)
-        for (unsigned int d = 0; d < 3; ++d)
-          coordinates.push_back(p[d]);
-      const auto unpack = [&](const auto &x) {
-        using Number = typename std::decay_t<decltype(x)>::value_type;
-        std::array<Point<3, Number>, 4> tet_ad;
-        std::array<Point<3, Number>, 3> tri_ad;
-        for (unsigned int v = 0; v < 4; ++v)
-          for (unsigned int d = 0; d < 3; ++d)
-            tet_ad[v][d] = x[3 * v + d];
-        for (unsigned int v = 0; v < 3; ++v)
-          for (unsigned int d = 0; d < 3; ++d)
-            tri_ad[v][d] = x[12 + 3 * v + d];
-        return energy(tet_ad, tri_ad);
-      };
-      if (with_hessian)
-        return differentiate(coordinates, unpack);
-      return differentiate_once(coordinates, unpack);
-    }
-
-    PairDerivatives
-    penalty_derivatives_ad(const std::array<Point<3>, 4> &tet,
-                           const std::array<Point<3>, 3> &tri,
-                           const std::array<double, 4>   &g,
-                           const double                   eps_p,
-                           const bool                     with_hessian = true);
   } // namespace Contact
 } // namespace TissueContact

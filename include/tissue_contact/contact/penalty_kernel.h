@@ -34,9 +34,9 @@ namespace TissueContact
      * vertices and chained through these closed forms.
      *
      * Returns false (and leaves @p result unset) when the energy is zero.
-     * The automatic-differentiation reference penalty_derivatives_ad()
-     * computes the same numbers; the test contact/penalty_kernel compares
-     * them.
+     * The automatic-differentiation reference (ad_derivatives() of
+     * penalty_energy(), contact/ad_reference.h) computes the same numbers;
+     * the test contact/penalty_kernel compares them.
      */
     bool
     penalty_kernel(const std::array<Point<3>, 4> &tet,
@@ -52,7 +52,8 @@ namespace TissueContact
      * @f$W = c\,A_T\sum_k G_k^2@f$ over the triangle vertices inside the
      * tetrahedron with positive depth, @f$c = \varepsilon_p/6@f$,
      * @f$G_k = N_k/V@f$ as in penalty_kernel(). Tested against
-     * collocation_derivatives_ad(). Returns false when the energy is zero.
+     * ad_derivatives() of collocation_energy(). Returns false when the energy
+     * is zero.
      */
     bool
     collocation_kernel(const std::array<Point<3>, 4> &tet,

@@ -47,13 +47,5 @@ namespace TissueContact
       return W;
     }
 
-    /** collocation_energy() and its gradient (and Hessian if asked) with
-     * respect to the 21 coordinates, by automatic differentiation. */
-    PairDerivatives
-    collocation_derivatives_ad(const std::array<Point<3>, 4> &tet,
-                               const std::array<Point<3>, 3> &tri,
-                               const std::array<double, 4>   &g,
-                               const double                   eps_p,
-                               const bool with_hessian = true);
   } // namespace Contact
 } // namespace TissueContact

@@ -1,0 +1,176 @@
+#pragma once
+
+#include <tissue_contact/contact/bounding_volume_tree.h>
+#include <tissue_contact/contact/contact_interaction.h>
+#include <tissue_contact/contact/contact_parameters.h>
+#include <tissue_contact/contact/contact_surface.h>
+#include <tissue_contact/contact/penalty_kernel.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <array>
+#include <memory>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace TissueContact
+{
+  namespace Contact
+  {
+    /**
+     * Contact between bodies, and of a body with itself, by material depth
+     * (doc/theory/05-contact.md, secs. 1-5 and 7): for every declared pair,
+     * the contact triangles of the surface body against the tetrahedra of
+     * the volume body, found by a bounding-volume tree over the tetrahedra
+     * (refitted every call, rebuilt after large motion); each intersecting
+     * (triangle, tetrahedron) pair adds the penalty
+     * @f$\frac{\varepsilon_p}{2}\int g_h^2\,da@f$ with its exact gradient
+     * and Hessian (penalty_kernel()), or the point-collocation baseline
+     * (collocation_kernel()), chosen once per pair. Pairs are evaluated in
+     * parallel and summed in a fixed order (reproducible).
+     */
+    class BodyContactAssembler : public ContactInteraction
+    {
+    public:
+      /** @p triangulation: the mesh of @p surface (its cells give the
+       * tetrahedra and the material depth). */
+      BodyContactAssembler(const ContactSurface               &surface,
+                           const Triangulation<3>             &triangulation,
+                           const std::set<types::boundary_id> &contact_surfaces,
+                           const std::vector<BodyContact>     &pairs);
+
+      void
+      assemble(const Vector<double> &u,
+               Vector<double>       &R,
+               SparseMatrix<double> *K) const override;
+
+      /** One energy per pair, in the declared order. */
+      std::vector<double>
+      energies(const Vector<double> &u) const override;
+
+      /** The DoF couplings of every (triangle, tetrahedron) candidate at
+       * @p u whose boxes overlap after the triangle's box is enlarged by
+       * @p margin. */
+      void
+      add_couplings(const Vector<double>   &u,
+                    const double            margin,
+                    DynamicSparsityPattern &dsp) const override;
+
+      /** Whether @p pattern holds the couplings of every pair with nonzero
+       * energy at @p u. */
+      bool
+      has_couplings(const Vector<double>  &u,
+                    const SparsityPattern &pattern) const override;
+
+      /** How often the tree was rebuilt (a vertex moved farther than the
+       * mean tetrahedron size since the last build). */
+      unsigned int
+      n_tree_rebuilds() const
+      {
+        return n_rebuilds;
+      }
+
+      /** Material depth at every vertex. */
+      const std::vector<double> &
+      vertex_depth() const
+      {
+        return depth;
+      }
+
+      /** Largest material depth reached by a vertex of a contact triangle
+       * inside a tetrahedron of a paired body (the penetration). */
+      double
+      max_penetration(const Vector<double> &u) const;
+
+      /** For every vertex of a contact triangle of a paired surface body:
+       * (its vertex index, the material depth it reaches inside a paired
+       * body, zero if none). With the area-integrated penalty the contact
+       * pressure at a surface point is @f$\varepsilon_p@f$ times this depth
+       * (per direction of a pair). */
+      std::vector<std::pair<unsigned int, double>>
+      penetrations(const Vector<double> &u) const;
+
+    private:
+      /** Area integration or point collocation: the energy and the kernel
+       * of one pair, chosen once when the pair is declared. */
+      struct Method
+      {
+        double (*energy)(const std::array<Point<3>, 4> &,
+                         const std::array<Point<3>, 3> &,
+                         const std::array<double, 4> &,
+                         const double);
+        bool (*kernel)(const std::array<Point<3>, 4> &,
+                       const std::array<Point<3>, 3> &,
+                       const std::array<double, 4> &,
+                       const double,
+                       const bool,
+                       PairKernel &);
+      };
+
+      const ContactSurface                       &surface;
+      std::vector<BodyContact>                    pairs;
+      std::vector<Method>                         methods; // per pair
+      std::vector<double>                         depth;   // per vertex
+      std::vector<std::array<unsigned int, 4>>    tets;    // vertex indices
+      std::vector<types::material_id>             tet_body;
+      mutable std::unique_ptr<BoundingVolumeTree> tree; // over tets
+      mutable unsigned int                        n_rebuilds = 0;
+      mutable std::vector<Point<3>> x_at_build; // positions at the build
+      double rebuild_distance = 0.;             // mean tetrahedron box diagonal
+
+      /** The method of pair @p p (an element of pairs). */
+      const Method &
+      method_of(const BodyContact &p) const
+      {
+        return methods[&p - pairs.data()];
+      }
+
+      /** Refit the tree to the positions @p x of the vertices. */
+      void
+      refit(const std::vector<Point<3>> &x) const;
+
+      /** Call @p f(t, k, pair) for every candidate pair of triangle t
+       * and tetrahedron k of a body pair (boxes overlapping after enlarging
+       * the triangle's by @p margin), triangles that are faces of the
+       * tetrahedron excluded. */
+      template <typename F>
+      void
+      for_each_candidate(const std::vector<Point<3>> &x,
+                         const double                 margin,
+                         const F                     &f) const;
+      /** for_each_candidate() for one triangle @p t. */
+      template <typename F>
+      void
+      for_each_candidate_of(const unsigned int           t,
+                            const std::vector<Point<3>> &x,
+                            const double                 margin,
+                            const F                     &f) const;
+      /** Whether triangle @p t belongs to the surface body of a pair. */
+      bool
+      surface_of_a_pair(const unsigned int t) const;
+      /** The positions and depths of triangle t and tetrahedron k. */
+      struct PairGeometry
+      {
+        std::array<Point<3>, 4> tet;
+        std::array<Point<3>, 3> tri;
+        std::array<double, 4>   g;
+      };
+      PairGeometry
+      pair_geometry(const std::vector<Point<3>> &x,
+                    const unsigned int           t,
+                    const unsigned int           k) const;
+
+      std::array<types::global_dof_index, 21>
+      pair_dofs(const unsigned int t, const unsigned int k) const;
+
+      /** Call @p f(t, k, derivatives) for every intersecting pair of a
+       * contact triangle t and a tetrahedron k with nonzero energy. */
+      template <typename F>
+      void
+      for_each_pair_contact(const Vector<double> &u,
+                            const bool            with_hessian,
+                            const F              &f) const;
+    };
+  } // namespace Contact
+} // namespace TissueContact

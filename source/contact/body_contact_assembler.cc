@@ -1,0 +1,410 @@
+#include <tissue_contact/contact/body_contact_assembler.h>
+#include <tissue_contact/contact/material_depth.h>
+#include <tissue_contact/contact/penalty_energy.h>
+#include <tissue_contact/contact/point_collocation.h>
+
+#include <deal.II/base/multithread_info.h>
+#include <deal.II/base/work_stream.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+namespace TissueContact
+{
+  namespace Contact
+  {
+    BodyContactAssembler::BodyContactAssembler(
+      const ContactSurface               &surface,
+      const Triangulation<3>             &tria,
+      const std::set<types::boundary_id> &contact_surfaces,
+      const std::vector<BodyContact>     &pairs)
+      : surface(surface)
+      , pairs(pairs)
+    {
+      // the one place area integration and point collocation differ
+      for (const auto &p : pairs)
+        methods.push_back(
+          p.point_collocation ?
+            Method{&collocation_energy<double>, &collocation_kernel} :
+            Method{&penalty_energy<double>, &penalty_kernel});
+      if (pairs.empty())
+        return;
+      // material depth, and a tree over the tetrahedra of the volume bodies
+      depth = compute_material_depth(tria, contact_surfaces);
+      std::set<types::material_id> volume_bodies;
+      for (const auto &p : pairs)
+        volume_bodies.insert(p.volume_body);
+      for (const auto &cell : tria.active_cell_iterators())
+        if (volume_bodies.count(cell->material_id()) > 0)
+          {
+            tets.push_back({cell->vertex_index(0),
+                            cell->vertex_index(1),
+                            cell->vertex_index(2),
+                            cell->vertex_index(3)});
+            tet_body.push_back(cell->material_id());
+            for (const unsigned int v : tets.back())
+              AssertThrow(std::isfinite(depth[v]),
+                          ExcMessage("Contact: body with material id " +
+                                     std::to_string(cell->material_id()) +
+                                     " is the volume body of a pair but has "
+                                     "no contact surface: its material depth "
+                                     "is undefined"));
+          }
+      std::vector<BoundingBox<3>> boxes;
+      for (const auto &t : tets)
+        boxes.emplace_back(std::vector<Point<3>>{
+          surface.X[t[0]], surface.X[t[1]], surface.X[t[2]], surface.X[t[3]]});
+      tree        = std::make_unique<BoundingVolumeTree>(boxes);
+      x_at_build  = surface.X;
+      double size = 0.;
+      for (const auto &b : boxes)
+        size += b.get_boundary_points().first.distance(
+          b.get_boundary_points().second);
+      rebuild_distance = boxes.empty() ? 0. : size / boxes.size();
+    }
+
+
+    void
+    BodyContactAssembler::refit(const std::vector<Point<3>> &x) const
+    {
+      std::vector<BoundingBox<3>> boxes;
+      boxes.reserve(tets.size());
+      for (const auto &t : tets)
+        boxes.emplace_back(
+          std::vector<Point<3>>{x[t[0]], x[t[1]], x[t[2]], x[t[3]]});
+      // a refitted tree stays exact but degrades when objects that were
+      // neighbours drift apart: rebuild once a vertex has moved farther than
+      // the mean tetrahedron size since the last build (a rebuild costs
+      // about 25 refits, both far below one assembly)
+      double moved = 0.;
+      for (const auto &t : tets)
+        for (const unsigned int v : t)
+          moved = std::max(moved, x[v].distance_square(x_at_build[v]));
+      if (std::sqrt(moved) > rebuild_distance)
+        {
+          tree       = std::make_unique<BoundingVolumeTree>(boxes);
+          x_at_build = x;
+          ++n_rebuilds;
+        }
+      else
+        tree->refit(boxes);
+    }
+
+
+    template <typename F>
+    void
+    BodyContactAssembler::for_each_candidate(const std::vector<Point<3>> &x,
+                                             const double margin,
+                                             const F     &f) const
+    {
+      for (unsigned int t = 0; t < surface.triangles.size(); ++t)
+        for_each_candidate_of(t, x, margin, f);
+    }
+
+
+    bool
+    BodyContactAssembler::surface_of_a_pair(const unsigned int t) const
+    {
+      for (const auto &p : pairs)
+        if (p.surface_body == surface.triangle_body[t])
+          return true;
+      return false;
+    }
+
+
+    template <typename F>
+    void
+    BodyContactAssembler::for_each_candidate_of(const unsigned int           t,
+                                                const std::vector<Point<3>> &x,
+                                                const double margin,
+                                                const F     &f) const
+    {
+      if (!surface_of_a_pair(t))
+        return;
+      const auto    &tv = surface.triangles[t];
+      BoundingBox<3> box(std::vector<Point<3>>{x[tv[0]], x[tv[1]], x[tv[2]]});
+      if (margin > 0.)
+        box.extend(margin);
+      tree->for_each_overlap(box, [&](const unsigned int k) {
+        const auto &kv = tets[k];
+        // a triangle that is a face of the tetrahedron
+        unsigned int shared = 0;
+        for (const unsigned int a : tv)
+          shared += std::count(kv.begin(), kv.end(), a);
+        if (shared == 3)
+          return;
+        for (const auto &p : pairs)
+          if (p.surface_body == surface.triangle_body[t] &&
+              p.volume_body == tet_body[k])
+            f(t, k, p);
+      });
+    }
+
+
+    BodyContactAssembler::PairGeometry
+    BodyContactAssembler::pair_geometry(const std::vector<Point<3>> &x,
+                                        const unsigned int           t,
+                                        const unsigned int           k) const
+    {
+      const auto &kv = tets[k];
+      const auto &tv = surface.triangles[t];
+      return {{x[kv[0]], x[kv[1]], x[kv[2]], x[kv[3]]},
+              {x[tv[0]], x[tv[1]], x[tv[2]]},
+              {depth[kv[0]], depth[kv[1]], depth[kv[2]], depth[kv[3]]}};
+    }
+
+
+    std::array<types::global_dof_index, 21>
+    BodyContactAssembler::pair_dofs(const unsigned int t,
+                                    const unsigned int k) const
+    {
+      std::array<types::global_dof_index, 21> dofs;
+      for (unsigned int a = 0; a < 4; ++a)
+        for (unsigned int c = 0; c < 3; ++c)
+          dofs[3 * a + c] = surface.vertex_dofs[tets[k][a]][c];
+      for (unsigned int a = 0; a < 3; ++a)
+        for (unsigned int c = 0; c < 3; ++c)
+          dofs[12 + 3 * a + c] =
+            surface.vertex_dofs[surface.triangles[t][a]][c];
+      return dofs;
+    }
+
+
+    void
+    BodyContactAssembler::assemble(const Vector<double> &u,
+                                   Vector<double>       &R,
+                                   SparseMatrix<double> *K) const
+    {
+      for_each_pair_contact(
+        u,
+        K != nullptr,
+        [&](const unsigned int t, const unsigned int k, const PairKernel &d) {
+          const auto dofs = pair_dofs(t, k);
+          for (unsigned int i = 0; i < 21; ++i)
+            R[dofs[i]] += d.gradient[i];
+          if (K == nullptr)
+            return;
+          // rows added with sorted, unique column indices (a vertex shared
+          // by the triangle and the tetrahedron appears twice among the 21)
+          std::array<types::global_dof_index, 21> unique_dofs;
+          std::array<unsigned int, 21>            slot;
+          unsigned int                            n_unique = 0;
+          std::array<unsigned int, 21>            order;
+          std::iota(order.begin(), order.end(), 0);
+          std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
+            return dofs[a] < dofs[b];
+          });
+          for (const unsigned int i : order)
+            {
+              if (n_unique == 0 || unique_dofs[n_unique - 1] != dofs[i])
+                unique_dofs[n_unique++] = dofs[i];
+              slot[i] = n_unique - 1;
+            }
+          std::array<std::array<double, 21>, 21> block{};
+          for (unsigned int i = 0; i < 21; ++i)
+            for (unsigned int j = 0; j < 21; ++j)
+              block[slot[i]][slot[j]] += d.hessian[i][j];
+          for (unsigned int i = 0; i < n_unique; ++i)
+            K->add(unique_dofs[i],
+                   n_unique,
+                   unique_dofs.data(),
+                   block[i].data(),
+                   false,
+                   true);
+        });
+    }
+
+
+    template <typename F>
+    void
+    BodyContactAssembler::for_each_pair_contact(const Vector<double> &u,
+                                                const bool with_hessian,
+                                                const F   &f) const
+    {
+      if (pairs.empty())
+        return;
+      const std::vector<Point<3>> x = surface.positions(u);
+      refit(x);
+      // the pairs of each contact triangle are evaluated in parallel (the
+      // tree is only read); f sees them serially, in the order of a serial
+      // loop, so sums are reproducible
+      std::vector<unsigned int> surface_triangles;
+      for (unsigned int t = 0; t < surface.triangles.size(); ++t)
+        if (surface_of_a_pair(t))
+          surface_triangles.push_back(t);
+      struct Result
+      {
+        unsigned int t = 0, k = 0;
+        PairKernel   d;
+      };
+      struct Copy
+      {
+        std::vector<Result> results;
+        unsigned int        n = 0;
+      };
+      struct Scratch
+      {};
+      WorkStream::run(
+        surface_triangles.cbegin(),
+        surface_triangles.cend(),
+        [&](const std::vector<unsigned int>::const_iterator &it,
+            Scratch &,
+            Copy &c) {
+          c.n = 0;
+          for_each_candidate_of(
+            *it,
+            x,
+            0.,
+            [&](const unsigned int t,
+                const unsigned int k,
+                const BodyContact &p) {
+              const auto [tet, tri, g] = pair_geometry(x, t, k);
+              // cheap rejection before differentiating: zero energy has
+              // zero gradient (the energy is nonnegative)
+              if (*std::max_element(g.begin(), g.end()) <= 0.)
+                return;
+              if (c.results.size() == c.n)
+                c.results.emplace_back();
+              Result    &r = c.results[c.n];
+              const bool hit =
+                method_of(p).kernel(tet, tri, g, p.penalty, with_hessian, r.d);
+              if (hit)
+                {
+                  r.t = t;
+                  r.k = k;
+                  ++c.n;
+                }
+            });
+        },
+        [&](const Copy &c) {
+          for (unsigned int i = 0; i < c.n; ++i)
+            f(c.results[i].t, c.results[i].k, c.results[i].d);
+        },
+        Scratch(),
+        Copy(),
+        MultithreadInfo::n_threads(),
+        8);
+    }
+
+
+    void
+    BodyContactAssembler::add_couplings(const Vector<double>   &u,
+                                        const double            margin,
+                                        DynamicSparsityPattern &dsp) const
+    {
+      if (pairs.empty())
+        return;
+      const std::vector<Point<3>> x = surface.positions(u);
+      refit(x);
+      for_each_candidate(x,
+                         margin,
+                         [&](const unsigned int t,
+                             const unsigned int k,
+                             const BodyContact &) {
+                           const auto dofs = pair_dofs(t, k);
+                           for (const auto i : dofs)
+                             for (const auto j : dofs)
+                               dsp.add(i, j);
+                         });
+    }
+
+
+    bool
+    BodyContactAssembler::has_couplings(const Vector<double>  &u,
+                                        const SparsityPattern &pattern) const
+    {
+      if (pairs.empty())
+        return true;
+      const std::vector<Point<3>> x = surface.positions(u);
+      refit(x);
+      // only pairs the assembly will add (nonzero energy) need couplings;
+      // add_couplings() adds whole 3 x 3 vertex blocks, so one entry per
+      // vertex pair tells
+      bool all = true;
+      for_each_candidate(
+        x,
+        0.,
+        [&](const unsigned int t, const unsigned int k, const BodyContact &p) {
+          if (!all)
+            return;
+          const auto [tet, tri, g] = pair_geometry(x, t, k);
+          if (*std::max_element(g.begin(), g.end()) <= 0.)
+            return;
+          const bool active = method_of(p).energy(tet, tri, g, p.penalty) > 0.;
+          if (!active)
+            return;
+          const auto dofs = pair_dofs(t, k);
+          for (unsigned int a = 0; a < 7 && all; ++a)
+            for (unsigned int b = 0; b < 7; ++b)
+              all = all && pattern.exists(dofs[3 * a], dofs[3 * b]);
+        });
+      return all;
+    }
+
+
+    double
+    BodyContactAssembler::max_penetration(const Vector<double> &u) const
+    {
+      double d_max = 0.;
+      for (const auto &[v, d] : penetrations(u))
+        d_max = std::max(d_max, d);
+      return d_max;
+    }
+
+
+    std::vector<std::pair<unsigned int, double>>
+    BodyContactAssembler::penetrations(const Vector<double> &u) const
+    {
+      if (pairs.empty())
+        return {};
+      const std::vector<Point<3>> x = surface.positions(u);
+      refit(x);
+      std::map<unsigned int, double> depth_of;
+      for (const auto &p : pairs)
+        for (unsigned int t = 0; t < surface.triangles.size(); ++t)
+          if (surface.triangle_body[t] == p.surface_body)
+            for (const unsigned int v : surface.triangles[t])
+              depth_of.emplace(v, 0.);
+      for_each_candidate(
+        x,
+        0.,
+        [&](const unsigned int t, const unsigned int k, const BodyContact &) {
+          const std::array<Point<3>, 4> tet = {
+            {x[tets[k][0]], x[tets[k][1]], x[tets[k][2]], x[tets[k][3]]}};
+          for (const unsigned int v : surface.triangles[t])
+            {
+              const std::array<Point<3>, 3> point   = {{x[v], x[v], x[v]}};
+              const auto                    polygon = intersect(tet, point);
+              if (polygon.n_vertices == 0)
+                continue;
+              double g = 0.;
+              for (unsigned int j = 0; j < 4; ++j)
+                g += polygon.vertex[0].lambda[j] * depth[tets[k][j]];
+              depth_of[v] = std::max(depth_of[v], g);
+            }
+        });
+      return {depth_of.begin(), depth_of.end()};
+    }
+
+
+    std::vector<double>
+    BodyContactAssembler::energies(const Vector<double> &u) const
+    {
+      std::vector<double> W(pairs.size(), 0.);
+      if (pairs.empty())
+        return W;
+      const std::vector<Point<3>> x = surface.positions(u);
+      refit(x);
+      for_each_candidate(
+        x,
+        0.,
+        [&](const unsigned int t, const unsigned int k, const BodyContact &p) {
+          const auto [tet, tri, g] = pair_geometry(x, t, k);
+          W[&p - pairs.data()] += method_of(p).energy(tet, tri, g, p.penalty);
+        });
+      return W;
+    }
+  } // namespace Contact
+} // namespace TissueContact

@@ -1,0 +1,42 @@
+#include <tissue_contact/contact/contact_surface.h>
+
+namespace TissueContact
+{
+  namespace Contact
+  {
+    ContactSurface::ContactSurface(
+      const Discretization               &disc,
+      const std::set<types::boundary_id> &contact_surfaces)
+    {
+      const auto &tria = disc.dof_handler.get_triangulation();
+      X                = tria.get_vertices();
+      vertex_dofs.resize(X.size());
+      for (const auto &cell : disc.dof_handler.active_cell_iterators())
+        {
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int c = 0; c < 3; ++c)
+              vertex_dofs[cell->vertex_index(v)][c] =
+                cell->vertex_dof_index(v, c);
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() &&
+                contact_surfaces.count(face->boundary_id()) > 0)
+              {
+                triangles.push_back({face->vertex_index(0),
+                                     face->vertex_index(1),
+                                     face->vertex_index(2)});
+                triangle_body.push_back(cell->material_id());
+              }
+        }
+    }
+
+
+    std::vector<Point<3>>
+    ContactSurface::positions(const Vector<double> &u) const
+    {
+      std::vector<Point<3>> x(X.size());
+      for (unsigned int v = 0; v < X.size(); ++v)
+        x[v] = position(v, u);
+      return x;
+    }
+  } // namespace Contact
+} // namespace TissueContact
