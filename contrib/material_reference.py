@@ -9,7 +9,7 @@ and a push-forward, so agreement checks the derivation, not only the code's
 self-consistency. Prints C++ initializers that the test embeds:
 Psi, P (row by row), |A| (Frobenius) and G : A : H for two fixed tensors.
 
-    python3 contrib/material_reference.py
+    python3 contrib/material_reference.py     # needs sympy (Debian: python3-sympy)
 """
 import sympy as sp
 
