@@ -101,6 +101,8 @@ namespace TissueContactTests
   {
     if (x == 0.)
       return "0";
+    if (!std::isfinite(x))
+      return std::isnan(x) ? "nan" : "inf";
     int    e = static_cast<int>(std::floor(std::log10(std::abs(x))));
     double m = x / std::pow(10., e);
     // rounding the mantissa may carry it to 10

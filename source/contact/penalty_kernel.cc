@@ -1,5 +1,7 @@
 #include <tissue_contact/contact/penalty_kernel.h>
 
+#include <algorithm>
+
 // Symbols follow doc/theory/05-contact.md, sec. 5.1.
 
 namespace TissueContact
@@ -190,13 +192,12 @@ namespace TissueContact
         if (d == 0.)
           return;
         v.s = a.value / d;
-        if (v.s < 0. || v.s > 1.)
-          {
-            // rounding disagrees with the side decision: the cut sits at
-            // the end point, as in intersect()
-            v.s = v.s < 0. ? 0. : 1.;
-            return;
-          }
+        // rounding may disagree with the side decision: the cut then sits
+        // at the end point, as in intersect(), but s keeps the derivatives
+        // of a / (a - b), the one-sided derivatives in the clipping case
+        // intersect() chose (treating the clamped s as a constant dropped
+        // them: gradients off by up to 100 % on rotated degenerate pairs)
+        v.s        = std::clamp(v.s, 0., 1.);
         v.s_varies = true;
         v.s_a      = -b.value / (d * d);
         v.s_b      = a.value / (d * d);

@@ -558,6 +558,101 @@ namespace
                 << error_bound(jump, -14) << std::endl;
       }
   }
+  /** A random rotation (Rodrigues) about a random axis. */
+  Tensor<2, 3>
+  random_rotation()
+  {
+    Tensor<1, 3> axis(
+      {random_value(-1., 1.), random_value(-1., 1.), random_value(-1., 1.)});
+    axis /= axis.norm();
+    const double angle = random_value(0., 2. * M_PI);
+    Tensor<2, 3> W;
+    W[0][1] = -axis[2];
+    W[0][2] = axis[1];
+    W[1][0] = axis[2];
+    W[1][2] = -axis[0];
+    W[2][0] = -axis[1];
+    W[2][1] = axis[0];
+    return unit_symmetric_tensor<3>() + std::sin(angle) * W +
+           (1. - std::cos(angle)) * W * W;
+  }
+
+  /**
+   * Exactly degenerate pairs (a triangle vertex on a face, on an edge, at
+   * a vertex of the tetrahedron; the triangle in a face plane) turned by a
+   * random rotation about a random point, so that the degeneracy holds
+   * only to rounding, as on a real mesh. The hand kernel's gradient
+   * against central differences of the energy (step 1e-7) and against the
+   * AD reference, on pairs with energy: the largest relative error, and
+   * how many pairs are off by more than 1e-3.
+   */
+  void
+  rotated_degenerate_families()
+  {
+    static const char *names[] = {"",
+                                  "vertex on a face",
+                                  "vertex on an edge",
+                                  "vertex at a vertex",
+                                  "triangle in a face plane"};
+    deallog << "rotated exactly degenerate pairs, gradient of the hand kernel:"
+            << std::endl;
+    for (unsigned int kind = 1; kind < 5; ++kind)
+      {
+        unsigned int n = 0, n_off_fd = 0, n_off_ad = 0;
+        double       e_fd = 0., e_ad = 0.;
+        while (n < 200)
+          {
+            Tet            tet    = random_tet();
+            Tri            tri    = triangle_near(tet, kind, 0.);
+            const auto     g      = random_depths();
+            const auto     Q      = random_rotation();
+            const Point<3> center = random_point(1.);
+            for (auto &p : tet)
+              p = center + Q * (p - center);
+            for (auto &p : tri)
+              p = center + Q * (p - center);
+            const auto c = coordinates(tet, tri);
+            const auto h = hand_derivatives_of(c, g);
+            // pairs with real energy: slivers of rounding size (a triangle
+            // that only touches the tetrahedron) are left out
+            const double scale =
+              10. * 0.5 *
+              cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]).norm() *
+              std::pow(*std::max_element(g.begin(), g.end()), 2);
+            if (!(h.energy > 1e-8 * scale))
+              continue;
+            ++n;
+            Vector<double> fd(21);
+            for (unsigned int i = 0; i < 21; ++i)
+              {
+                auto         cp = c, cm = c;
+                const double step = 1e-7;
+                cp[i] += step;
+                cm[i] -= step;
+                fd[i] = (energy_of(cp, g) - energy_of(cm, g)) / (2. * step);
+              }
+            const auto     ad = derivatives_of(c, g);
+            Vector<double> d(h.gradient);
+            d -= fd;
+            const double r_fd = d.l2_norm() / fd.l2_norm();
+            d                 = h.gradient;
+            d -= ad.gradient;
+            const double r_ad = d.l2_norm() / ad.gradient.l2_norm();
+            e_fd              = std::max(e_fd, r_fd);
+            e_ad              = std::max(e_ad, r_ad);
+            n_off_fd += r_fd > 1e-3;
+            n_off_ad += r_ad > 1e-3;
+          }
+        // in a face plane the energy jumps (the triangle is in or out of
+        // the tetrahedron): no finite difference across it means anything
+        deallog << "  " << names[kind] << " (" << n << " pairs): ";
+        if (kind < 4)
+          deallog << "vs FD of the energy max " << scientific(e_fd)
+                  << ", off by > 1e-3: " << n_off_fd << "; ";
+        deallog << "vs AD max " << scientific(e_ad)
+                << ", off by > 1e-3: " << n_off_ad << std::endl;
+      }
+  }
 } // namespace
 
 int
@@ -569,4 +664,6 @@ main()
   hand_kernel_against_ad();
   collocation_against_ad();
   degenerate_positions();
+  // last: it draws from the shared random generator
+  rotated_degenerate_families();
 }

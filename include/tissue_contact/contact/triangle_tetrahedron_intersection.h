@@ -166,15 +166,18 @@ namespace TissueContact
               if (p_in != q_in)
                 {
                   // crossing parameter from the barycentric coordinate,
-                  // kept in [0, 1] where rounding disagrees with the side
+                  // kept in [0, 1] where rounding disagrees with the side;
+                  // the shift keeps the derivatives of lambda_p / (lambda_p
+                  // - lambda_q), the one-sided derivatives of the case
+                  // decided here (as the hand kernel's cut ratios do)
                   const Number denominator = p.lambda[i] - q.lambda[i];
                   Number       t           = Number(0.);
                   if (value(denominator) != 0.)
                     t = p.lambda[i] / denominator;
                   if (value(t) < 0.)
-                    t = Number(0.);
+                    t -= value(t);
                   else if (value(t) > 1.)
-                    t = Number(1.);
+                    t += 1. - value(t);
                   PolygonVertex<Number> &c =
                     clipped.vertex[clipped.n_vertices++];
                   c.x = p.x + t * (q.x - p.x);
