@@ -1,4 +1,5 @@
 #include <tissue_contact/contact/body_contact_assembler.h>
+#include <tissue_contact/contact/contact_parameters.h>
 #include <tissue_contact/contact/material_depth.h>
 #include <tissue_contact/contact/penalty_energy.h>
 #include <tissue_contact/contact/point_collocation.h>
@@ -16,10 +17,11 @@ namespace TissueContact
   namespace Contact
   {
     BodyContactAssembler::BodyContactAssembler(
-      const ContactSurface               &surface,
-      const Triangulation<3>             &tria,
-      const std::set<types::boundary_id> &contact_surfaces,
-      const std::vector<BodyContact>     &pairs)
+      const ContactSurface                                   &surface,
+      const Triangulation<3>                                 &tria,
+      const std::set<types::boundary_id>                     &contact_surfaces,
+      const std::vector<BodyContact>                         &pairs,
+      const std::map<types::material_id, types::material_id> &body_of)
       : surface(surface)
       , pairs(pairs)
     {
@@ -32,22 +34,25 @@ namespace TissueContact
       if (pairs.empty())
         return;
       // material depth, and a tree over the tetrahedra of the volume bodies
-      depth = compute_material_depth(tria, contact_surfaces);
+      depth           = compute_material_depth(tria, contact_surfaces, body_of);
+      const auto body = [&](const types::material_id m) {
+        return body_of_material(body_of, m);
+      };
       std::set<types::material_id> volume_bodies;
       for (const auto &p : pairs)
         volume_bodies.insert(p.volume_body);
       for (const auto &cell : tria.active_cell_iterators())
-        if (volume_bodies.count(cell->material_id()) > 0)
+        if (volume_bodies.count(body(cell->material_id())) > 0)
           {
             tets.push_back({cell->vertex_index(0),
                             cell->vertex_index(1),
                             cell->vertex_index(2),
                             cell->vertex_index(3)});
-            tet_body.push_back(cell->material_id());
+            tet_body.push_back(body(cell->material_id()));
             for (const unsigned int v : tets.back())
               AssertThrow(std::isfinite(depth[v]),
                           ExcMessage("Contact: body with material id " +
-                                     std::to_string(cell->material_id()) +
+                                     std::to_string(body(cell->material_id())) +
                                      " is the volume body of a pair but has "
                                      "no contact surface: its material depth "
                                      "is undefined"));

@@ -8,7 +8,7 @@ namespace TissueContact
   {
     ContactAssembler::ContactAssembler(const Discretization &disc,
                                        const Parameters     &parameters)
-      : surface(disc, parameters.surfaces)
+      : surface(disc, parameters.surfaces, parameters.body_of_material)
     {
       if (!parameters.pairs.empty())
         {
@@ -16,7 +16,8 @@ namespace TissueContact
             surface,
             disc.dof_handler.get_triangulation(),
             parameters.surfaces,
-            parameters.pairs);
+            parameters.pairs,
+            parameters.body_of_material);
           interactions.push_back(bodies.get());
         }
       if (!parameters.obstacles.empty())

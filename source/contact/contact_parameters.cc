@@ -68,7 +68,8 @@ namespace TissueContact
       prm.add_parameter("Surface body",
                         surface_body,
                         "Material id (0..255) of the body whose contact "
-                        "triangles are pushed out of the other body.",
+                        "triangles are pushed out of the other body (for a "
+                        "body of several materials: their Contact body).",
                         Patterns::Integer(0, 255));
       prm.add_parameter("Volume body",
                         volume_body,

@@ -1,3 +1,4 @@
+#include <tissue_contact/contact/contact_parameters.h>
 #include <tissue_contact/contact/contact_surface.h>
 
 namespace TissueContact
@@ -5,9 +6,13 @@ namespace TissueContact
   namespace Contact
   {
     ContactSurface::ContactSurface(
-      const Discretization               &disc,
-      const std::set<types::boundary_id> &contact_surfaces)
+      const Discretization                                   &disc,
+      const std::set<types::boundary_id>                     &contact_surfaces,
+      const std::map<types::material_id, types::material_id> &body_of)
     {
+      const auto body = [&](const types::material_id m) {
+        return body_of_material(body_of, m);
+      };
       const auto &tria = disc.dof_handler.get_triangulation();
       X                = tria.get_vertices();
       vertex_dofs.resize(X.size());
@@ -24,7 +29,7 @@ namespace TissueContact
                 triangles.push_back({face->vertex_index(0),
                                      face->vertex_index(1),
                                      face->vertex_index(2)});
-                triangle_body.push_back(cell->material_id());
+                triangle_body.push_back(body(cell->material_id()));
               }
         }
     }

@@ -1,4 +1,5 @@
 #include <tissue_contact/contact/bounding_volume_tree.h>
+#include <tissue_contact/contact/contact_parameters.h>
 #include <tissue_contact/contact/material_depth.h>
 
 #include <deal.II/base/bounding_box.h>
@@ -46,16 +47,21 @@ namespace TissueContact
 
 
     std::vector<double>
-    compute_material_depth(const Triangulation<3>             &triangulation,
-                           const std::set<types::boundary_id> &contact_surfaces)
+    compute_material_depth(
+      const Triangulation<3>                                 &triangulation,
+      const std::set<types::boundary_id>                     &contact_surfaces,
+      const std::map<types::material_id, types::material_id> &body_of)
     {
+      const auto body = [&](const types::material_id m) {
+        return body_of_material(body_of, m);
+      };
       using Triangle = std::array<Point<3>, 3>;
       std::map<types::material_id, std::vector<Triangle>> triangles;
       for (const auto &cell : triangulation.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary() &&
               contact_surfaces.count(face->boundary_id()) > 0)
-            triangles[cell->material_id()].push_back(
+            triangles[body(cell->material_id())].push_back(
               {face->vertex(0), face->vertex(1), face->vertex(2)});
 
       const auto         &vertices = triangulation.get_vertices();
@@ -72,7 +78,7 @@ namespace TissueContact
 
           std::fill(done.begin(), done.end(), false);
           for (const auto &cell : triangulation.active_cell_iterators())
-            if (cell->material_id() == id)
+            if (body(cell->material_id()) == id)
               for (const unsigned int v : cell->vertex_indices())
                 {
                   const unsigned int i = cell->vertex_index(v);

@@ -145,6 +145,16 @@ namespace TissueContact
                         "Reference density rho0 (mass per reference volume, "
                         "consistent units; >= 0).",
                         Patterns::Double(0.));
+      prm.add_parameter(
+        "Contact body",
+        contact_body,
+        "For contact, the material id of the body this material belongs "
+        "to (-1: its own, 0..255: the Material id of another body). "
+        "Materials with the same contact body are one body: its material "
+        "depth is measured to the contact boundary of all of them, across "
+        "their interfaces, and Contact pairs and obstacles name it by that "
+        "id (a body of graded materials, e.g. muscle to tendon).",
+        Patterns::Integer(-1, 255));
       material.declare_parameters(prm);
       prm.enter_subsection("Rigid motion");
       declare_motion(prm, "rigid body", rigid_motion);
@@ -341,6 +351,24 @@ namespace TissueContact
         b.parse_parameters(prm);
       for (auto &d : dirichlet)
         d.parse_parameters(prm);
+      contact.body_of_material.clear();
+      for (const auto &b : bodies)
+        if (b.contact_body >= 0 &&
+            static_cast<types::material_id>(b.contact_body) != b.id)
+          {
+            bool known = false;
+            for (const auto &other : bodies)
+              known =
+                known ||
+                (other.id == static_cast<types::material_id>(b.contact_body) &&
+                 other.contact_body < 0);
+            AssertThrow(known,
+                        ExcMessage("body '" + b.name + "': Contact body " +
+                                   std::to_string(b.contact_body) +
+                                   " is not the Material id of a body that is "
+                                   "its own contact body"));
+            contact.body_of_material[b.id] = b.contact_body;
+          }
       contact.parse_parameters(prm);
       solver.parse_parameters(prm);
       time_integration.parse_parameters(prm);

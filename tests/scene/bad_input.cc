@@ -118,6 +118,9 @@ main(int argc, char **argv)
   run("two bodies with one material id",
       "subsection Bodies\n set Number of bodies = 2\n"
       " subsection Body 0\n end\n subsection Body 1\n end\nend\n");
+  run("contact body that is no body",
+      "subsection Bodies\n subsection Body 0\n  set Contact body = 5\n end\n"
+      "end\n");
   run("fiber direction that is not a formula",
       "subsection Bodies\n subsection Body 0\n  subsection Fiber\n"
       "   set Enabled = true\n   set Direction = 1; 0\n  end\n end\nend\n");

@@ -9,6 +9,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <set>
 #include <utility>
@@ -35,10 +36,12 @@ namespace TissueContact
     public:
       /** @p triangulation: the mesh of @p surface (its cells give the
        * tetrahedra and the material depth). */
-      BodyContactAssembler(const ContactSurface               &surface,
-                           const Triangulation<3>             &triangulation,
-                           const std::set<types::boundary_id> &contact_surfaces,
-                           const std::vector<BodyContact>     &pairs);
+      BodyContactAssembler(
+        const ContactSurface               &surface,
+        const Triangulation<3>             &triangulation,
+        const std::set<types::boundary_id> &contact_surfaces,
+        const std::vector<BodyContact>     &pairs,
+        const std::map<types::material_id, types::material_id> &body_of = {});
 
       void
       assemble(const Vector<double> &u,

@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
+#include <map>
 #include <set>
 #include <vector>
 
@@ -13,6 +14,17 @@ namespace TissueContact
   namespace Contact
   {
     using namespace dealii;
+
+    /** The body material id @p m belongs to under @p body_of (itself where
+     * @p body_of does not list it). */
+    inline types::material_id
+    body_of_material(
+      const std::map<types::material_id, types::material_id> &body_of,
+      const types::material_id                                m)
+    {
+      const auto it = body_of.find(m);
+      return it == body_of.end() ? m : it->second;
+    }
 
     /**
      * prm subsection "Contact/Obstacle N": a rigid obstacle, its penalty
@@ -65,6 +77,17 @@ namespace TissueContact
       std::vector<ObstacleContact> obstacles;
       std::vector<BodyContact>     pairs;
       unsigned int                 n_obstacles = 0, n_pairs = 0;
+      /** The body each material id belongs to, where it is not its own
+       * (set by the scene from the bodies' "Contact body" entries): the
+       * bodies of pairs and obstacles are these ids. */
+      std::map<types::material_id, types::material_id> body_of_material;
+
+      /** The body material id @p m belongs to. */
+      types::material_id
+      body_of(const types::material_id m) const
+      {
+        return Contact::body_of_material(body_of_material, m);
+      }
 
       /** Whether the scene asks for any contact (else no contact search
        * at all). */

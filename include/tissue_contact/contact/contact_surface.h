@@ -6,6 +6,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <array>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -24,8 +25,11 @@ namespace TissueContact
     class ContactSurface
     {
     public:
-      ContactSurface(const Discretization               &disc,
-                     const std::set<types::boundary_id> &contact_surfaces);
+      /** @p body_of: the body of each material id (Parameters::body_of). */
+      ContactSurface(
+        const Discretization               &disc,
+        const std::set<types::boundary_id> &contact_surfaces,
+        const std::map<types::material_id, types::material_id> &body_of = {});
 
       /** Number of contact triangles. */
       unsigned int
@@ -36,7 +40,8 @@ namespace TissueContact
 
       /** Vertex indices of each contact triangle. */
       std::vector<std::array<unsigned int, 3>> triangles;
-      /** Material id of the cell each triangle bounds. */
+      /** The body of the cell each triangle bounds (its material id, or
+       * the body several material ids form). */
       std::vector<types::material_id> triangle_body;
       /** Reference position of every vertex of the mesh. */
       std::vector<Point<3>> X;

@@ -3,6 +3,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/grid/tria.h>
 
+#include <map>
 #include <set>
 #include <vector>
 
@@ -29,7 +30,10 @@ namespace TissueContact
      * it is interpolated linearly from the four vertices
      * (doc/theory/05-contact.md, sec. 1). A vertex shared by several bodies
      * takes the smallest of their depths; a vertex of a body without a
-     * contact surface gets +infinity.
+     * contact surface gets +infinity. A body is a material id, or the
+     * material ids that @p body_of maps to the same body id (a body of
+     * several materials: its depth is measured to its whole contact
+     * boundary, across the interfaces of its materials).
      *
      * Each body's contact triangles go into a BoundingVolumeTree and every
      * vertex queries its nearest triangle by branch and bound: about
@@ -37,7 +41,8 @@ namespace TissueContact
      */
     std::vector<double>
     compute_material_depth(
-      const Triangulation<3>             &triangulation,
-      const std::set<types::boundary_id> &contact_surfaces);
+      const Triangulation<3>                                 &triangulation,
+      const std::set<types::boundary_id>                     &contact_surfaces,
+      const std::map<types::material_id, types::material_id> &body_of = {});
   } // namespace Contact
 } // namespace TissueContact

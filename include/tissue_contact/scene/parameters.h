@@ -43,9 +43,13 @@ namespace TissueContact
      * material, density, optional fibers, or its rigid motion. */
     struct BodyParameters
     {
-      std::string                   name    = "body";
-      types::material_id            id      = 0;
-      double                        density = 1.;
+      std::string        name    = "body";
+      types::material_id id      = 0;
+      double             density = 1.;
+      /** The material id of the body this material belongs to for contact
+       * (-1: its own): materials with the same contact body form one body,
+       * e.g. grades from muscle to tendon. */
+      int                           contact_body = -1;
       Materials::MaterialParameters material;
       PrescribedMotion              rigid_motion;
 
