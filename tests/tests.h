@@ -69,6 +69,26 @@ namespace TissueContactTests
       }
   }
 
+  /** A random rotation (Rodrigues' formula) about a random axis. */
+  Tensor<2, 3>
+  random_rotation()
+  {
+    Tensor<1, 3> axis;
+    for (unsigned d = 0; d < 3; ++d)
+      axis[d] = random_value(-1., 1.);
+    axis /= axis.norm();
+    const double angle = random_value(0., 2. * M_PI);
+    Tensor<2, 3> W;
+    W[0][1] = -axis[2];
+    W[0][2] = axis[1];
+    W[1][0] = axis[2];
+    W[1][2] = -axis[0];
+    W[2][0] = -axis[1];
+    W[2][1] = axis[0];
+    return unit_symmetric_tensor<3>() + std::sin(angle) * W +
+           (1. - std::cos(angle)) * W * W;
+  }
+
   /** Relative error |a-b|/max(|b|, floor), the measure printed by tests. */
   inline double
   relative_error(const double a_minus_b_norm,

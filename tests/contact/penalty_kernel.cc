@@ -558,24 +558,6 @@ namespace
                 << error_bound(jump, -14) << std::endl;
       }
   }
-  /** A random rotation (Rodrigues) about a random axis. */
-  Tensor<2, 3>
-  random_rotation()
-  {
-    Tensor<1, 3> axis(
-      {random_value(-1., 1.), random_value(-1., 1.), random_value(-1., 1.)});
-    axis /= axis.norm();
-    const double angle = random_value(0., 2. * M_PI);
-    Tensor<2, 3> W;
-    W[0][1] = -axis[2];
-    W[0][2] = axis[1];
-    W[1][0] = axis[2];
-    W[1][2] = -axis[0];
-    W[2][0] = -axis[1];
-    W[2][1] = axis[0];
-    return unit_symmetric_tensor<3>() + std::sin(angle) * W +
-           (1. - std::cos(angle)) * W * W;
-  }
 
   /**
    * Exactly degenerate pairs (a triangle vertex on a face, on an edge, at
