@@ -1,0 +1,193 @@
+// A parametric knee for the flexion scene (dissertation ch. 7, paper sec. 6).
+// The Visible Human meshes are not available: every part is a simple solid of
+// about human size, in metres. The leg axis is z (thigh up), the knee axis
+// (through the femoral condyles) is the x axis, the front of the leg is +y.
+//
+// Bodies, physical volumes = material ids:
+//   1 femur: a shaft and two condyles (cylinders along x) at the knee
+//   2 tibia: a shaft with a wider plateau below the condyles
+//   3 patella: an ellipsoid in front of the condyles
+//   4 patellar ligament: from the patella's lower end to the tibial plateau
+//   5 quadriceps tendon: from the patella's upper end up the front of the
+//     femur
+//   6 quadriceps muscle: in front of the femur shaft, above the tendon
+//   7 skin-fat layer: the rest of a cylinder of radius R_leg around all
+// Attached interfaces share their nodes (one conforming mesh): tendon-muscle,
+// tendon-patella, ligament-patella, ligament-tibia and skin-fat on the tibia
+// (the shin, where the skin lies on the bone). Every other interface slides
+// without friction: its two sides are separate surfaces with separate nodes
+// (skin-fat on femur, patella, ligament, tendon and muscle; patella on the
+// femur; femur on tibia).
+//
+// Physical surfaces = boundary ids (every boundary face has one):
+//   11..17 the sliding surface of body 1..7 (for skin-fat: its inner side)
+//   18 the skin's outer surface (self-contact behind the knee)
+//   21 the thigh's cut (z = L_thigh: femur, muscle, skin-fat)
+//   22 the shin's cut (z = -L_shin: tibia, skin-fat)
+//
+// The mesh size: h, h / 3 around the patella, and n_2pi elements around a
+// full circle of a curved surface (measured with gmsh 4.8):
+//   gmsh -3 -setnumber h 0.012 -setnumber n_2pi 8 knee.geo
+//     42 642 tetrahedra, 9 929 nodes, 11 271 contact triangles: the
+//     sources' scale; passes tissue-contact's mesh checks;
+//   gmsh -3 -setnumber h 0.03 -setnumber n_2pi 6 knee.geo
+//     8 266 tetrahedra, but one flat tetrahedron in the skin-fat by the
+//     condyles (the mesh checks reject it); coarser settings fail in gmsh
+//     (the 0.5 mm skin gap against elements of 3 cm).
+// WORK IN PROGRESS (issue 10, item 1): the suite's coarse knee of about
+// 2 000 tetrahedra needs a simpler skin cavity.
+
+SetFactory("OpenCASCADE");
+If (!Exists(h))
+  h = 0.03;
+EndIf
+If (!Exists(n_2pi))
+  n_2pi = 6; // elements around a full circle of a curved surface
+EndIf
+
+R_leg   = 0.065;  // radius of the leg (skin surface)
+L_thigh = 0.16;   // from the knee axis up to the thigh's cut
+L_shin  = 0.16;   // from the knee axis down to the shin's cut
+r_femur = 0.022;  // femur shaft
+r_cond  = 0.024;  // condyles: cylinders along x, w_cond wide each,
+w_cond  = 0.022;  // gap_c apart (the intercondylar notch), y_cond in front
+gap_c   = 0.008;  // of the shaft axis
+y_cond  = 0.004;
+r_tibia = 0.020;  // tibia shaft
+r_plat  = 0.034;  // tibial plateau, t_plat thick, gap_ft below the
+t_plat  = 0.020;  // condyles (cartilage and menisci are not modelled)
+gap_ft  = 0.004;
+a_pat   = 0.017;  // patella: semi-axes in x, y, z, gap_pf in front of the
+b_pat   = 0.009;  // condyles
+c_pat   = 0.022;
+gap_pf  = 0.003;
+
+gap_s   = 0.0005; // initial gap between skin-fat and the sliding parts
+
+// The sliding parts are built twice: as bodies (d = 0) and, enlarged by
+// d = gap_s, as the cavity cut out of the skin-fat layer, so that the
+// skin-fat touches only the tibia (to which it is attached).
+Macro SlidingParts
+  // femur: a shaft and two condyles
+  v1 = newv; Cylinder(v1) = {0, 0, 0, 0, 0, L_thigh + d, r_femur + d};
+  v2 = newv; Cylinder(v2) = {gap_c / 2 - d, y_cond, 0, w_cond + 2 * d, 0, 0, r_cond + d};
+  v3 = newv; Cylinder(v3) = {-gap_c / 2 + d, y_cond, 0, -w_cond - 2 * d, 0, 0, r_cond + d};
+  v4 = newv; Box(v4) = {-gap_c / 2 - w_cond - d, y_cond - r_cond - d, 0, gap_c + 2 * w_cond + 2 * d, 2 * r_cond + 2 * d, 0.6 * r_cond};
+  f() = BooleanUnion{ Volume{v1}; Delete; }{ Volume{v2, v3, v4}; Delete; };
+  // patella: an ellipsoid
+  v5 = newv; Sphere(v5) = {0, 0, 0, 1};
+  Dilate {{0, 0, 0}, {a_pat + d, b_pat + d, c_pat + d}} { Volume{v5}; }
+  Translate {0, y_pat, z_pat} { Volume{v5}; }
+  p() = {v5};
+  // patellar ligament: from the patella's lower end to the plateau's front
+  v6 = newv; Box(v6) = {-0.008 - d, y_pat - 0.004 - d, z_plat - 0.012, 0.016 + 2 * d, 0.008 + 2 * d, z_pat - c_pat + 0.006 - (z_plat - 0.012)};
+  l() = {v6};
+  // quadriceps tendon: from the patella's upper end up to z_m
+  v7 = newv; Box(v7) = {-0.012 - d, y_pat - 0.005 - d, z_pat + c_pat - 0.006, 0.024 + 2 * d, 0.010 + 2 * d, z_m - (z_pat + c_pat - 0.006)};
+  t() = {v7};
+  // quadriceps muscle: in front of the femur shaft, from z_m to the cut
+  v8 = newv; Box(v8) = {-0.040 - d, r_femur + 0.003 - d, z_m - d, 0.080 + 2 * d, 0.030 + 2 * d, L_thigh - z_m + 2 * d};
+  m() = {v8};
+Return
+
+z_plat = -r_cond - gap_ft; // top of the tibial plateau
+y_pat  = y_cond + r_cond + gap_pf + b_pat;
+z_pat  = 0.004;
+z_m    = 0.10;             // tendon-muscle junction
+
+// tibia: plateau and shaft
+Cylinder(1000) = {0, 0, z_plat - t_plat, 0, 0, t_plat, r_plat};
+Cylinder(1001) = {0, 0, -L_shin, 0, 0, L_shin + z_plat - t_plat + 0.002, r_tibia};
+tib() = BooleanUnion{ Volume{1000}; Delete; }{ Volume{1001}; Delete; };
+
+// the bodies
+d = 0;
+Call SlidingParts;
+femur() = f();
+pat()   = p();
+// the ligament and the tendon overlap the patella (and the ligament the
+// plateau) where they attach: the overlaps are cut away
+lig() = BooleanDifference{ Volume{l()}; Delete; }{ Volume{pat(), tib()}; };
+ten() = BooleanDifference{ Volume{t()}; Delete; }{ Volume{pat()}; };
+mus() = m();
+
+// the cavity, and the skin-fat layer: the leg's cylinder minus the tibia and
+// the cavity
+d = gap_s;
+Call SlidingParts;
+cavity() = BooleanUnion{ Volume{f()}; Delete; }{ Volume{p(), l(), t(), m()}; Delete; };
+Cylinder(2000) = {0, 0, -L_shin, 0, 0, L_shin + L_thigh, R_leg};
+skn() = BooleanDifference{ Volume{2000}; Delete; }{ Volume{cavity(), tib()}; };
+Recursive Delete { Volume{cavity()}; }
+
+// one conforming mesh for the attached parts; the femur stays apart
+all() = BooleanFragments{ Volume{pat(), lig(), ten(), mus(), tib(), skn()}; Delete; }{};
+vol() = {femur(0), all(4), all(0), all(1), all(2), all(3), all(5)};
+// femur, tibia, patella, ligament, tendon, muscle, skin-fat
+For b In {0:6}
+  Physical Volume(b + 1) = {vol(b)};
+EndFor
+
+// the cuts
+eps = 1e-6;
+thigh() = Surface In BoundingBox{-1, -1, L_thigh - eps, 1, 1, L_thigh + eps};
+shin()  = Surface In BoundingBox{-1, -1, -L_shin - eps, 1, 1, -L_shin + eps};
+Physical Surface(21) = {thigh()};
+Physical Surface(22) = {shin()};
+
+// every other boundary surface of a body: a surface of its boundary that no
+// other body shares and that is no cut
+outer() = {};
+For b In {0:6}
+  mine() = Abs(Boundary{ Volume{vol(b)}; });
+  free() = {};
+  For i In {0:#mine()-1}
+    s = mine(i);
+    shared = 0;
+    For c In {0:6}
+      If (c != b)
+        other() = Abs(Boundary{ Volume{vol(c)}; });
+        For j In {0:#other()-1}
+          If (other(j) == s)
+            shared = 1;
+          EndIf
+        EndFor
+      EndIf
+    EndFor
+    For j In {0:#thigh()-1}
+      If (thigh(j) == s)
+        shared = 1;
+      EndIf
+    EndFor
+    For j In {0:#shin()-1}
+      If (shin(j) == s)
+        shared = 1;
+      EndIf
+    EndFor
+    If (!shared)
+      bb() = BoundingBox Surface{s};
+      If (b == 6 && bb(0) < -R_leg + 1e-4)
+        outer() += s; // the skin's outer surface
+      Else
+        free() += s;
+      EndIf
+    EndIf
+  EndFor
+  Physical Surface(11 + b) = {free()};
+EndFor
+Physical Surface(18) = {outer()};
+
+// element size h, h / 3 around the patella and its attachments
+Field[1] = Ball;
+Field[1].Radius = 0.035;
+Field[1].Thickness = 0.03;
+Field[1].XCenter = 0;
+Field[1].YCenter = y_pat;
+Field[1].ZCenter = z_pat;
+Field[1].VIn = h / 3;
+Field[1].VOut = h;
+Background Field = 1;
+Mesh.CharacteristicLengthMax = h;
+Mesh.CharacteristicLengthFromCurvature = 1;
+Mesh.MinimumElementsPerTwoPi = n_2pi;
+Mesh.MshFileVersion = 2.2;
