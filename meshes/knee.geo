@@ -25,21 +25,24 @@
 //   21 the thigh's cut (z = L_thigh: femur, muscle, skin-fat)
 //   22 the shin's cut (z = -L_shin: tibia, skin-fat)
 //
-// The mesh size: h, h / 3 around the patella, and n_2pi elements around a
-// full circle of a curved surface (measured with gmsh 4.8):
+// The mesh size: h, h / pat_refine around the patella (default 3), and
+// n_2pi elements around a full circle of a curved surface (measured with
+// gmsh 4.8; both meshes pass tissue-contact's mesh checks):
 //   gmsh -3 -setnumber h 0.012 -setnumber n_2pi 8 knee.geo
-//     42 642 tetrahedra, 9 929 nodes, 11 271 contact triangles: the
-//     sources' scale; passes tissue-contact's mesh checks;
-//   gmsh -3 -setnumber h 0.03 -setnumber n_2pi 6 knee.geo
-//     8 266 tetrahedra, but one flat tetrahedron in the skin-fat by the
-//     condyles (the mesh checks reject it); coarser settings fail in gmsh
-//     (the 0.5 mm skin gap against elements of 3 cm).
+//     41 876 tetrahedra, 9 742 nodes, 11 005 contact triangles: the
+//     sources' scale;
+//   gmsh -3 -setnumber h 0.04 -setnumber n_2pi 5 knee.geo
+//     6 114 tetrahedra, 1 763 nodes: the coarsest that meshes (coarser
+//     settings fail in gmsh: the 0.5 mm skin gap against elements of 4 cm).
 // WORK IN PROGRESS (issue 10, item 1): the suite's coarse knee of about
 // 2 000 tetrahedra needs a simpler skin cavity.
 
 SetFactory("OpenCASCADE");
 If (!Exists(h))
   h = 0.03;
+EndIf
+If (!Exists(pat_refine))
+  pat_refine = 3; // the element size around the patella is h / pat_refine
 EndIf
 If (!Exists(n_2pi))
   n_2pi = 6; // elements around a full circle of a curved surface
@@ -72,7 +75,9 @@ Macro SlidingParts
   v1 = newv; Cylinder(v1) = {0, 0, 0, 0, 0, L_thigh + d, r_femur + d};
   v2 = newv; Cylinder(v2) = {gap_c / 2 - d, y_cond, 0, w_cond + 2 * d, 0, 0, r_cond + d};
   v3 = newv; Cylinder(v3) = {-gap_c / 2 + d, y_cond, 0, -w_cond - 2 * d, 0, 0, r_cond + d};
-  v4 = newv; Box(v4) = {-gap_c / 2 - w_cond - d, y_cond - r_cond - d, 0, gap_c + 2 * w_cond + 2 * d, 2 * r_cond + 2 * d, 0.6 * r_cond};
+  // the bridge between the condyles, not tangent to them (a tangent face
+  // would leave slivers)
+  v4 = newv; Box(v4) = {-gap_c / 2 - w_cond - d, y_cond - 0.8 * r_cond - d, 0, gap_c + 2 * w_cond + 2 * d, 1.6 * r_cond + 2 * d, 0.6 * r_cond};
   f() = BooleanUnion{ Volume{v1}; Delete; }{ Volume{v2, v3, v4}; Delete; };
   // patella: an ellipsoid
   v5 = newv; Sphere(v5) = {0, 0, 0, 1};
@@ -177,14 +182,14 @@ For b In {0:6}
 EndFor
 Physical Surface(18) = {outer()};
 
-// element size h, h / 3 around the patella and its attachments
+// element size h, h / pat_refine around the patella and its attachments
 Field[1] = Ball;
 Field[1].Radius = 0.035;
 Field[1].Thickness = 0.03;
 Field[1].XCenter = 0;
 Field[1].YCenter = y_pat;
 Field[1].ZCenter = z_pat;
-Field[1].VIn = h / 3;
+Field[1].VIn = h / pat_refine;
 Field[1].VOut = h;
 Background Field = 1;
 Mesh.CharacteristicLengthMax = h;
