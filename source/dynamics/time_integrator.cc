@@ -22,7 +22,7 @@ namespace TissueContact
        * with the scheme's a(u), v(u), and the tangent
        * @f$K(u) + c_M M + c_C C@f$.
        */
-      class EffectiveProblem : public Solvers::NonlinearProblem
+      class EffectiveProblem : public Solvers::ForwardingProblem
       {
       public:
         EffectiveProblem(const TimeIntegrator       &integrator,
@@ -31,8 +31,8 @@ namespace TissueContact
                          const Vector<double>       *M_lumped,
                          const State                &s,
                          const double                dt)
-          : integrator(integrator)
-          , problem(problem)
+          : Solvers::ForwardingProblem(problem)
+          , integrator(integrator)
           , M(M)
           , M_lumped(M_lumped)
           , s(s)
@@ -94,28 +94,13 @@ namespace TissueContact
             }
         }
 
-        types::global_dof_index
-        n_dofs() const override
-        {
-          return problem.n_dofs();
-        }
-        const SparsityPattern &
-        sparsity_pattern() const override
-        {
-          return problem.sparsity_pattern();
-        }
-        bool
-        update_sparsity_pattern(const Vector<double> &u) override
-        {
-          return problem.update_sparsity_pattern(u);
-        }
         bool
         assemble(const Vector<double> &u,
                  const double          load_factor,
                  Vector<double>       &R,
                  SparseMatrix<double> *K) override
         {
-          if (!problem.assemble(u, load_factor, R, K))
+          if (!inner.assemble(u, load_factor, R, K))
             return false;
           Vector<double> v, a, tmp(u.size());
           kinematics(u, v, a);
@@ -143,7 +128,7 @@ namespace TissueContact
         double
         energy(const Vector<double> &u, const double load_factor) const override
         {
-          const double Pi = problem.energy(u, load_factor);
+          const double Pi = inner.energy(u, load_factor);
           if (!std::isfinite(Pi))
             return Pi;
           Vector<double> v, a, w(u.size()), tmp(u.size()), d(u);
@@ -162,30 +147,9 @@ namespace TissueContact
           return Pi + w * d + 0.5 * (d * Jd);
         }
 
-        std::map<types::global_dof_index, double>
-        prescribed_values(const double load_factor) const override
-        {
-          return problem.prescribed_values(load_factor);
-        }
-        double
-        external_force_norm(const double load_factor) const override
-        {
-          return problem.external_force_norm(load_factor);
-        }
-        Vector<double>
-        quasi_viscosity_diagonal(const double eta) const override
-        {
-          return problem.quasi_viscosity_diagonal(eta);
-        }
-        std::vector<std::vector<bool>>
-        constant_modes() const override
-        {
-          return problem.constant_modes();
-        }
 
       private:
         const TimeIntegrator       &integrator;
-        Solvers::NonlinearProblem  &problem;
         const SparseMatrix<double> *M;
         const Vector<double>       *M_lumped;
         const State                &s;

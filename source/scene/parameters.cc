@@ -54,6 +54,17 @@ namespace TissueContact
         });
       }
 
+      /** Bind the entry "Boundary id" of a condition to @p id. */
+      void
+      add_boundary_id(ParameterHandler &prm, types::boundary_id &id)
+      {
+        prm.add_parameter("Boundary id",
+                          id,
+                          "The boundary id (gmsh physical surface tag, "
+                          "0..255).",
+                          Patterns::Integer(0, 255));
+      }
+
       void
       check_motion(const PrescribedMotion &m)
       {
@@ -172,11 +183,7 @@ namespace TissueContact
     void
     DirichletParameters::declare_parameters(ParameterHandler &prm)
     {
-      prm.add_parameter("Boundary id",
-                        boundary_id,
-                        "The boundary id (gmsh physical surface tag, "
-                        "0..255).",
-                        Patterns::Integer(0, 255));
+      add_boundary_id(prm, boundary_id);
       prm.add_parameter("Components",
                         components,
                         "Which displacement components are prescribed.",
@@ -195,11 +202,7 @@ namespace TissueContact
     void
     TractionParameters::declare_parameters(ParameterHandler &prm)
     {
-      prm.add_parameter("Boundary id",
-                        boundary_id,
-                        "The boundary id (gmsh physical surface tag, "
-                        "0..255).",
-                        Patterns::Integer(0, 255));
+      add_boundary_id(prm, boundary_id);
       prm.add_parameter("Traction",
                         traction,
                         "Dead traction t0 per unit reference area at load "

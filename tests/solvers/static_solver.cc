@@ -292,22 +292,13 @@ namespace
    * tangent at (the start of a Newton iteration, i.e. every accepted
    * iterate and the increment's initial guess) is checked for inverted
    * elements. */
-  class WatchedProblem : public Solvers::NonlinearProblem
+  class WatchedProblem : public Solvers::ForwardingProblem
   {
   public:
     explicit WatchedProblem(Problem &problem)
-      : problem(problem)
+      : Solvers::ForwardingProblem(problem)
+      , problem(problem)
     {}
-    types::global_dof_index
-    n_dofs() const override
-    {
-      return problem.n_dofs();
-    }
-    const SparsityPattern &
-    sparsity_pattern() const override
-    {
-      return problem.sparsity_pattern();
-    }
     bool
     assemble(const Vector<double> &u,
              const double          load_factor,
@@ -320,21 +311,6 @@ namespace
           min_J = std::min(min_J, problem.elastic_assembler().min_jacobian(u));
         }
       return problem.assemble(u, load_factor, R, K);
-    }
-    std::map<types::global_dof_index, double>
-    prescribed_values(const double load_factor) const override
-    {
-      return problem.prescribed_values(load_factor);
-    }
-    double
-    external_force_norm(const double load_factor) const override
-    {
-      return problem.external_force_norm(load_factor);
-    }
-    Vector<double>
-    quasi_viscosity_diagonal(const double eta) const override
-    {
-      return problem.quasi_viscosity_diagonal(eta);
     }
     unsigned int n_iterates = 0;
     double       min_J      = 1e300;

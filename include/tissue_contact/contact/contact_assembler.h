@@ -56,20 +56,6 @@ namespace TissueContact
       double
       energy(const Vector<double> &u) const;
 
-      /** The body-pair contact, or null if no pair is declared. */
-      const BodyContactAssembler *
-      body_contact() const
-      {
-        return bodies.get();
-      }
-
-      /** The obstacle contact, or null if no obstacle is declared. */
-      const ObstacleAssembler *
-      obstacle_contact() const
-      {
-        return obstacles.get();
-      }
-
       /** Number of contact triangles. */
       unsigned int
       n_triangles() const

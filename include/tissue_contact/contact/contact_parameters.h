@@ -82,12 +82,6 @@ namespace TissueContact
        * bodies of pairs and obstacles are these ids. */
       std::map<types::material_id, types::material_id> body_of_material;
 
-      /** The body material id @p m belongs to. */
-      types::material_id
-      body_of(const types::material_id m) const
-      {
-        return Contact::body_of_material(body_of_material, m);
-      }
 
       /** Whether the scene asks for any contact (else no contact search
        * at all). */

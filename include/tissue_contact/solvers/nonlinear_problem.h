@@ -93,5 +93,70 @@ namespace TissueContact
         return {};
       }
     };
+
+    /**
+     * A NonlinearProblem that forwards every call to another one: derive
+     * from it and override what changes (the time integrators' effective
+     * problem of one step, a test that watches the states a solver visits).
+     */
+    class ForwardingProblem : public NonlinearProblem
+    {
+    public:
+      explicit ForwardingProblem(NonlinearProblem &inner)
+        : inner(inner)
+      {}
+
+      types::global_dof_index
+      n_dofs() const override
+      {
+        return inner.n_dofs();
+      }
+      const SparsityPattern &
+      sparsity_pattern() const override
+      {
+        return inner.sparsity_pattern();
+      }
+      bool
+      update_sparsity_pattern(const Vector<double> &u) override
+      {
+        return inner.update_sparsity_pattern(u);
+      }
+      bool
+      assemble(const Vector<double> &u,
+               const double          load_factor,
+               Vector<double>       &R,
+               SparseMatrix<double> *K) override
+      {
+        return inner.assemble(u, load_factor, R, K);
+      }
+      std::map<types::global_dof_index, double>
+      prescribed_values(const double load_factor) const override
+      {
+        return inner.prescribed_values(load_factor);
+      }
+      double
+      external_force_norm(const double load_factor) const override
+      {
+        return inner.external_force_norm(load_factor);
+      }
+      Vector<double>
+      quasi_viscosity_diagonal(const double eta) const override
+      {
+        return inner.quasi_viscosity_diagonal(eta);
+      }
+      double
+      energy(const Vector<double> &u, const double load_factor) const override
+      {
+        return inner.energy(u, load_factor);
+      }
+      std::vector<std::vector<bool>>
+      constant_modes() const override
+      {
+        return inner.constant_modes();
+      }
+
+    protected:
+      NonlinearProblem &inner;
+    };
   } // namespace Solvers
 } // namespace TissueContact
