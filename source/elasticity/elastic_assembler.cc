@@ -118,7 +118,7 @@ namespace TissueContact
                 grad_N[(c * n_q + q) * n_nodes + local_node[k]] =
                   fe_values.shape_grad(k, q);
 
-          if (b->material == nullptr)
+          if (!b->loaded)
             continue;
           local = 0.;
           if (b->density != 0. && loads.gravity.norm() > 0.)

@@ -168,6 +168,17 @@ namespace TissueContact
         Patterns::Integer(-1, 255));
       material.declare_parameters(prm);
       prm.enter_subsection("Rigid motion");
+      prm.add_parameter(
+        "Free",
+        free_rigid,
+        "For Model = rigid: false, the body follows the motion below; true, "
+        "its motion is unknown, six DoFs (the displacement of its center, "
+        "the mean of its nodes, and a rotation vector) found by equilibrium "
+        "with the bodies attached to it (shared nodes), its contacts and its "
+        "loads, like FEBio's rigid bodies (doc/theory/07). A free body needs "
+        "something attached or touching; static runs only; leave the motion "
+        "below at zero.",
+        Patterns::Bool());
       declare_motion(prm, "rigid body", rigid_motion);
       prm.leave_subsection();
     }
@@ -177,6 +188,19 @@ namespace TissueContact
     BodyParameters::parse_parameters(ParameterHandler &)
     {
       check_motion(rigid_motion);
+      if (!free_rigid)
+        return;
+      AssertThrow(material.model == "rigid",
+                  ExcMessage("body '" + name +
+                             "': Rigid motion/Free = true "
+                             "needs Model = rigid (it is " +
+                             material.model + ")"));
+      AssertThrow(rigid_motion.angle == 0. &&
+                    rigid_motion.translation.norm() == 0.,
+                  ExcMessage("body '" + name +
+                             "': a free rigid body's motion "
+                             "is unknown; set no Translation or Rotation "
+                             "angle in its Rigid motion"));
     }
 
 

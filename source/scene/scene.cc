@@ -187,8 +187,10 @@ namespace TissueContact
     {
       std::map<types::material_id, Elasticity::BodyData> data;
       for (unsigned int i = 0; i < parameters.bodies.size(); ++i)
-        data[parameters.bodies[i].id] = {materials[i].get(),
-                                         parameters.bodies[i].density};
+        data[parameters.bodies[i].id] = {
+          materials[i].get(),
+          parameters.bodies[i].density,
+          !parameters.bodies[i].prescribed_rigid()};
       return data;
     }
 
@@ -237,7 +239,7 @@ namespace TissueContact
         }
 
       for (const auto &b : parameters.bodies)
-        if (b.material.model == "rigid")
+        if (b.prescribed_rigid())
           {
             std::set<types::global_dof_index> seen;
             for (const auto &cell : disc.dof_handler.active_cell_iterators())
@@ -251,6 +253,37 @@ namespace TissueContact
                                         X[dofs[k]],
                                         &b.rigid_motion});
                 }
+          }
+      return result;
+    }
+
+
+    std::vector<Rigid::FreeRigidBodies::Body>
+    Scene::free_rigid_bodies(const Discretization &disc) const
+    {
+      const std::vector<Point<3>>               X = disc.support_points();
+      std::vector<Rigid::FreeRigidBodies::Body> result;
+      std::vector<types::global_dof_index>      dofs(disc.fe.n_dofs_per_cell());
+      for (const auto &b : parameters.bodies)
+        if (b.free_rigid)
+          {
+            Rigid::FreeRigidBodies::Body body;
+            body.name = b.name;
+            std::set<types::global_dof_index> seen;
+            for (const auto &cell : disc.dof_handler.active_cell_iterators())
+              if (cell->material_id() == b.id)
+                {
+                  cell->get_dof_indices(dofs);
+                  for (unsigned int k = 0; k < dofs.size(); ++k)
+                    if (seen.insert(dofs[k]).second)
+                      {
+                        body.dofs.push_back(dofs[k]);
+                        body.components.push_back(
+                          disc.fe.system_to_component_index(k).first);
+                        body.X.push_back(X[dofs[k]]);
+                      }
+                }
+            result.push_back(body);
           }
       return result;
     }

@@ -17,6 +17,11 @@ namespace TissueContact
     : out(out)
     , nonlinear_problem(parameters)
   {
+    AssertThrow(nonlinear_problem.free_rigid_bodies() == nullptr,
+                ExcMessage("free rigid bodies (Rigid motion/Free = true) are "
+                           "supported in static runs only (Time "
+                           "integration/Scheme = static): their inertia is "
+                           "not modelled"));
     const auto &disc   = nonlinear_problem.discretization();
     const auto  bodies = nonlinear_problem.get_scene().body_data();
     const auto &ti     = parameters.time_integration;

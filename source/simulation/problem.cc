@@ -20,7 +20,36 @@ namespace TissueContact
     if (parameters.contact.enabled())
       contact =
         std::make_unique<Contact::ContactAssembler>(disc, parameters.contact);
-    rebuild_sparsity_pattern(Vector<double>(disc.n_dofs()));
+    const auto free_bodies = scene.free_rigid_bodies(disc);
+    if (!free_bodies.empty())
+      {
+        rigid =
+          std::make_unique<Rigid::FreeRigidBodies>(disc.n_dofs(), free_bodies);
+        for (const auto &p : prescribed)
+          AssertThrow(!rigid->is_slave(p.dof),
+                      ExcMessage(
+                        "a node of a free rigid body is also prescribed (by a "
+                        "Dirichlet condition or a body with a prescribed "
+                        "motion) at " +
+                        Utilities::to_string(p.X[0]) + ", " +
+                        Utilities::to_string(p.X[1]) + ", " +
+                        Utilities::to_string(p.X[2]) +
+                        "; a free body's motion is unknown: prescribe none "
+                        "of its boundary, or make it a prescribed rigid "
+                        "body"));
+      }
+    rebuild_sparsity_pattern(Vector<double>(n_dofs()));
+  }
+
+
+  Vector<double>
+  Problem::displacement(const Vector<double> &u) const
+  {
+    if (!rigid)
+      return u;
+    Vector<double> result;
+    rigid->expand(u, result);
+    return result;
   }
 
 
@@ -36,16 +65,28 @@ namespace TissueContact
   void
   Problem::rebuild_sparsity_pattern(const Vector<double> &u)
   {
-    if (!contact || scene.parameters.contact.pairs.empty())
+    const bool body_contact =
+      contact && !scene.parameters.contact.pairs.empty();
+    if (!body_contact && !rigid)
       {
         sparsity.copy_from(disc.sparsity_pattern);
         return;
       }
     DynamicSparsityPattern dsp(disc.n_dofs());
     DoFTools::make_sparsity_pattern(disc.dof_handler, dsp);
-    contact->add_couplings(
-      u, 0.5 * GridTools::minimal_cell_diameter(scene.triangulation), dsp);
-    sparsity.copy_from(dsp);
+    if (body_contact)
+      contact->add_couplings(displacement(u),
+                             0.5 * GridTools::minimal_cell_diameter(
+                                     scene.triangulation),
+                             dsp);
+    if (!rigid)
+      {
+        sparsity.copy_from(dsp);
+        return;
+      }
+    DynamicSparsityPattern full;
+    rigid->add_couplings(dsp, full);
+    sparsity.copy_from(full);
   }
 
 
@@ -53,7 +94,7 @@ namespace TissueContact
   Problem::update_sparsity_pattern(const Vector<double> &u)
   {
     if (!contact || scene.parameters.contact.pairs.empty() ||
-        contact->has_couplings(u, sparsity))
+        contact->has_couplings(displacement(u), sparsity))
       return false;
     rebuild_sparsity_pattern(u);
     return true;
@@ -66,7 +107,13 @@ namespace TissueContact
                     Vector<double>       &R,
                     SparseMatrix<double> *K)
   {
-    if (!assembler.assemble(u, load_factor, R, K))
+    // with free rigid bodies: assemble at the finite element displacement,
+    // then condense onto the bodies' unknowns (doc/theory/07)
+    if (rigid)
+      rigid->expand(u, u_fe);
+    const Vector<double> &x = rigid ? u_fe : u;
+    Vector<double>       &r = rigid ? R_fe : R;
+    if (!assembler.assemble(x, load_factor, r, K))
       return false;
     if (contact)
       {
@@ -75,8 +122,10 @@ namespace TissueContact
           scope =
             std::make_unique<TimerOutput::Scope>(*timer,
                                                  "assembly: contact part");
-        contact->assemble(u, R, K);
+        contact->assemble(x, r, K);
       }
+    if (rigid)
+      rigid->condense(u, R_fe, R, K);
     return true;
   }
 
@@ -84,8 +133,11 @@ namespace TissueContact
   double
   Problem::energy(const Vector<double> &u, const double load_factor) const
   {
-    const double W = assembler.energy(u, load_factor);
-    return contact ? W + contact->energy(u) : W;
+    if (rigid)
+      rigid->expand(u, u_fe);
+    const Vector<double> &x = rigid ? u_fe : u;
+    const double          W = assembler.energy(x, load_factor);
+    return contact ? W + contact->energy(x) : W;
   }
 
 
@@ -94,10 +146,13 @@ namespace TissueContact
                   const double          load_factor,
                   std::vector<double>  &contact_energies) const
   {
-    contact_energies = contact ? contact->energies(u) : std::vector<double>();
+    if (rigid)
+      rigid->expand(u, u_fe);
+    const Vector<double> &x = rigid ? u_fe : u;
+    contact_energies = contact ? contact->energies(x) : std::vector<double>();
     return std::accumulate(contact_energies.begin(),
                            contact_energies.end(),
-                           assembler.energy(u, load_factor));
+                           assembler.energy(x, load_factor));
   }
 
 
@@ -121,7 +176,8 @@ namespace TissueContact
   Vector<double>
   Problem::quasi_viscosity_diagonal(const double eta) const
   {
-    return assembler.quasi_viscosity_diagonal(eta);
+    const Vector<double> D = assembler.quasi_viscosity_diagonal(eta);
+    return rigid ? rigid->condense_diagonal(D) : D;
   }
 
 
@@ -132,6 +188,16 @@ namespace TissueContact
     DoFTools::extract_constant_modes(disc.dof_handler,
                                      ComponentMask(3, true),
                                      modes);
+    if (rigid)
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          for (types::global_dof_index i = 0; i < disc.n_dofs(); ++i)
+            if (rigid->is_slave(i))
+              modes[c][i] = false;
+          modes[c].resize(n_dofs(), false);
+          for (const auto q : rigid->translation_unknowns(c))
+            modes[c][q] = true;
+        }
     return modes;
   }
 } // namespace TissueContact

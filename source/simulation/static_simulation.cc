@@ -21,9 +21,11 @@ namespace TissueContact
   {
     Solvers::IncrementalNewtonSolver solver(
       nonlinear_problem.get_scene().parameters.solver);
-    solver.on_iteration = on_iteration;
-    u                   = 0.;
-    return solver.solve(nonlinear_problem, u);
+    solver.on_iteration              = on_iteration;
+    u                                = 0.;
+    const SolveStatistics statistics = solver.solve(nonlinear_problem, u);
+    nonlinear_problem.complete(u);
+    return statistics;
   }
 
 
@@ -74,7 +76,11 @@ namespace TissueContact
         if (p.output.write_vtu)
           {
             TimerOutput::Scope scope(timer, "output");
-            vtu.write(disc, assembler, u, lambda, depth_field());
+            vtu.write(disc,
+                      assembler,
+                      nonlinear_problem.displacement(u),
+                      lambda,
+                      depth_field());
           }
       };
 
@@ -88,6 +94,7 @@ namespace TissueContact
         nonlinear_problem.set_timer(&timer);
         statistics = solver.solve(nonlinear_problem, u, &timer);
         nonlinear_problem.set_timer(nullptr);
+        nonlinear_problem.complete(u);
       }
     catch (const std::exception &e)
       {
@@ -99,26 +106,33 @@ namespace TissueContact
         AssertThrow(false, ExcMessage(error_message(e) + kept));
       }
 
-    double u_max = 0.;
-    for (const double v : u)
+    const Vector<double> u_fe  = nonlinear_problem.displacement(u);
+    double               u_max = 0.;
+    for (const double v : u_fe)
       u_max = std::max(u_max, std::abs(v));
     out << "Converged: " << statistics.increments << " increments ("
         << statistics.cutbacks << " cut back), " << statistics.newton_iterations
         << " Newton iterations, " << statistics.linear_iterations
         << " linear iterations\n"
         << "  max |u_i| = " << u_max
-        << ", min J = " << assembler.min_jacobian(u) << "\n"
+        << ", min J = " << assembler.min_jacobian(u_fe) << "\n"
         << "  convergence log: " << csv << "\n";
     if (contact && !p.contact.obstacles.empty())
-      out << "  obstacle force on the bodies " << contact->obstacle_force(u)
-          << ", max penetration " << contact->max_obstacle_penetration(u)
+      out << "  obstacle force on the bodies " << contact->obstacle_force(u_fe)
+          << ", max penetration " << contact->max_obstacle_penetration(u_fe)
           << "\n";
     if (contact && !p.contact.pairs.empty())
       out << "  penetration (largest material depth reached by a contact "
              "vertex inside a paired body): "
-          << contact->max_body_penetration(u) << "\n"
+          << contact->max_body_penetration(u_fe) << "\n"
           << "  contact tree: rebuilt " << contact->n_tree_rebuilds()
           << " times (a vertex moved more than the mean element size)\n";
+    if (const auto *rigid = nonlinear_problem.free_rigid_bodies())
+      for (unsigned int b = 0; b < rigid->n_bodies(); ++b)
+        out << "  free rigid body '" << rigid->name(b) << "': center moved by "
+            << rigid->translation(u, b) << ", rotated by "
+            << rigid->rotation_vector(u, b).norm() * 180. / M_PI
+            << " degrees\n";
     if (p.output.write_vtu)
       out << "  results: " << vtu.pvd_file() << " (open in ParaView)\n";
     return statistics;

@@ -24,6 +24,10 @@ namespace TissueContact
     {
       const Materials::Material *material = nullptr;
       double                     density  = 0.;
+      /** Whether gravity and tractions act on the body's cells: true for
+       * deformable and free rigid bodies, false for a body whose motion is
+       * prescribed (its loads would only enter the reactions). */
+      bool loaded = true;
     };
 
     /** Dead external loads at load factor 1: body force per unit mass and

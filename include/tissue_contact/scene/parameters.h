@@ -52,6 +52,16 @@ namespace TissueContact
       int                           contact_body = -1;
       Materials::MaterialParameters material;
       PrescribedMotion              rigid_motion;
+      /** A rigid body whose motion is unknown (six DoFs, doc/theory/07)
+       * instead of prescribed by rigid_motion. */
+      bool free_rigid = false;
+
+      /** Whether the body is rigid with a prescribed motion. */
+      bool
+      prescribed_rigid() const
+      {
+        return material.model == "rigid" && !free_rigid;
+      }
 
       /** Bind the entries of the current subsection to this object (the
        * material's to @p material). */

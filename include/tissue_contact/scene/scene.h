@@ -3,6 +3,7 @@
 #include <tissue_contact/base/discretization.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/materials/material.h>
+#include <tissue_contact/rigid/free_rigid_bodies.h>
 #include <tissue_contact/scene/parameters.h>
 
 #include <deal.II/grid/tria.h>
@@ -51,6 +52,11 @@ namespace TissueContact
        * rigid bodies (a later entry for the same DoF wins). */
       std::vector<PrescribedDof>
       prescribed_dofs(const Discretization &disc) const;
+
+      /** The free rigid bodies (Rigid motion/Free) with every DoF of their
+       * cells; empty if there are none. */
+      std::vector<Rigid::FreeRigidBodies::Body>
+      free_rigid_bodies(const Discretization &disc) const;
 
     private:
       std::vector<std::unique_ptr<Materials::Material>> materials;

@@ -3,6 +3,7 @@
 #include <tissue_contact/base/discretization.h>
 #include <tissue_contact/contact/contact_assembler.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
+#include <tissue_contact/rigid/free_rigid_bodies.h>
 #include <tissue_contact/scene/scene.h>
 #include <tissue_contact/solvers/nonlinear_problem.h>
 
@@ -20,7 +21,9 @@ namespace TissueContact
    * its bodies (Scene::Scene), the finite element space, the elastic weak
    * form with its dead loads (Elasticity::ElasticAssembler), the contact
    * interactions the scene declares (none: no contact search at all) and the
-   * prescribed displacements of boundaries and rigid bodies. As a
+   * prescribed displacements of boundaries and rigid bodies, and the free
+   * rigid bodies (Rigid::FreeRigidBodies: six unknowns each, after the
+   * finite element DoFs, their nodes' DoFs slaved to them). As a
    * Solvers::NonlinearProblem it gives the residual and tangent
    * @f$R(u,\lambda) = f_{int}(u) + \partial W_c/\partial u - \lambda
    * f_{ext}@f$, the potential energy and the prescribed values at a load
@@ -61,6 +64,26 @@ namespace TissueContact
      * scene declares no body pair. */
     const std::vector<double> *
     depth_field() const;
+    /** The free rigid bodies, or null if the scene has none. */
+    const Rigid::FreeRigidBodies *
+    free_rigid_bodies() const
+    {
+      return rigid.get();
+    }
+    /** The displacement of every finite element DoF (disc.n_dofs()
+     * entries) in the unknowns @p u (n_dofs()): @p u itself without free
+     * rigid bodies, else with their nodes' DoFs set by their motion. What
+     * output and post-processing read. */
+    Vector<double>
+    displacement(const Vector<double> &u) const;
+    /** Set the free rigid bodies' slave entries of @p u to their motion
+     * (nothing without free rigid bodies). */
+    void
+    complete(Vector<double> &u) const
+    {
+      if (rigid)
+        rigid->complete(u);
+    }
     /** Number of prescribed DoFs. */
     std::size_t
     n_prescribed() const
@@ -79,7 +102,7 @@ namespace TissueContact
     types::global_dof_index
     n_dofs() const override
     {
-      return disc.n_dofs();
+      return rigid ? rigid->n_dofs() : disc.n_dofs();
     }
     /** The finite element pattern, plus the couplings of current contact
      * pairs. */
@@ -102,7 +125,8 @@ namespace TissueContact
     Vector<double>
     quasi_viscosity_diagonal(const double eta) const override;
     /** The three rigid translations (one mask per displacement
-     * component), AMG's near-null space. */
+     * component, with the free rigid bodies' translations), AMG's
+     * near-null space. */
     std::vector<std::vector<bool>>
     constant_modes() const override;
     /** Elastic potential (with the loads' work) plus contact energy. */
@@ -128,8 +152,12 @@ namespace TissueContact
     Discretization                             disc;
     Elasticity::ElasticAssembler               assembler;
     std::unique_ptr<Contact::ContactAssembler> contact;
-    TimerOutput                               *timer = nullptr;
-    SparsityPattern                            sparsity;
-    std::vector<Scene::PrescribedDof>          prescribed;
+    std::unique_ptr<Rigid::FreeRigidBodies>    rigid;
+    /** With free rigid bodies: the finite element displacement and residual
+     * (disc.n_dofs()) of the last assemble() or energy(). */
+    mutable Vector<double>            u_fe, R_fe;
+    TimerOutput                      *timer = nullptr;
+    SparsityPattern                   sparsity;
+    std::vector<Scene::PrescribedDof> prescribed;
   };
 } // namespace TissueContact

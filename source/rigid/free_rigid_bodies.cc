@@ -1,0 +1,257 @@
+#include <tissue_contact/rigid/free_rigid_bodies.h>
+#include <tissue_contact/rigid/rotation.h>
+
+#include <deal.II/base/exceptions.h>
+
+namespace TissueContact
+{
+  namespace Rigid
+  {
+    FreeRigidBodies::FreeRigidBodies(const types::global_dof_index n_fe,
+                                     const std::vector<Body>      &bodies)
+      : n_fe(n_fe)
+      , bodies(bodies)
+      , owner(n_fe, -1)
+      , slave_index(n_fe, 0)
+    {
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        {
+          const Body &body = bodies[b];
+          AssertThrow(!body.dofs.empty(),
+                      ExcMessage("the free rigid body '" + body.name +
+                                 "' has no cells in the mesh"));
+          // c: the mean of the support points (each point has three DoFs)
+          Point<3> c;
+          for (const Point<3> &X : body.X)
+            c += X;
+          centers.push_back(c / double(body.X.size()));
+          for (unsigned int k = 0; k < body.dofs.size(); ++k)
+            {
+              const auto i = body.dofs[k];
+              AssertThrow(owner[i] < 0 || owner[i] == int(b),
+                          ExcMessage("the free rigid bodies '" +
+                                     bodies[owner[i]].name + "' and '" +
+                                     body.name +
+                                     "' share nodes; attach them through an "
+                                     "elastic body or make them one body"));
+              owner[i]       = b;
+              slave_index[i] = k;
+            }
+        }
+    }
+
+
+    Tensor<1, 3>
+    FreeRigidBodies::translation(const Vector<double> &u,
+                                 const unsigned int    b) const
+    {
+      Tensor<1, 3> t;
+      for (unsigned int i = 0; i < 3; ++i)
+        t[i] = u[first_unknown(b) + i];
+      return t;
+    }
+
+
+    Tensor<1, 3>
+    FreeRigidBodies::rotation_vector(const Vector<double> &u,
+                                     const unsigned int    b) const
+    {
+      Tensor<1, 3> theta;
+      for (unsigned int i = 0; i < 3; ++i)
+        theta[i] = u[first_unknown(b) + 3 + i];
+      return theta;
+    }
+
+
+    void
+    FreeRigidBodies::expand(const Vector<double> &u, Vector<double> &u_fe) const
+    {
+      AssertDimension(u.size(), n_dofs());
+      u_fe.reinit(n_fe, true);
+      for (types::global_dof_index i = 0; i < n_fe; ++i)
+        u_fe[i] = u[i];
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        {
+          const Tensor<1, 3> t    = translation(u, b);
+          const Tensor<2, 3> R    = rotation(rotation_vector(u, b)).R;
+          const Body        &body = bodies[b];
+          for (unsigned int k = 0; k < body.dofs.size(); ++k)
+            {
+              // u_s = (R (X - c) + c + t - X)_i
+              const Tensor<1, 3> r = body.X[k] - centers[b];
+              const unsigned int i = body.components[k];
+              u_fe[body.dofs[k]]   = (R * r)[i] - r[i] + t[i];
+            }
+        }
+    }
+
+
+    void
+    FreeRigidBodies::complete(Vector<double> &u) const
+    {
+      Vector<double> u_fe;
+      expand(u, u_fe);
+      for (types::global_dof_index i = 0; i < n_fe; ++i)
+        u[i] = u_fe[i];
+    }
+
+
+    std::vector<std::array<double, 6>>
+    FreeRigidBodies::jacobian(const unsigned int  b,
+                              const Tensor<1, 3> &theta) const
+    {
+      const RotationDerivatives          rot  = rotation(theta);
+      const Body                        &body = bodies[b];
+      std::vector<std::array<double, 6>> J(body.dofs.size());
+      for (unsigned int k = 0; k < body.dofs.size(); ++k)
+        {
+          const Tensor<1, 3> r = body.X[k] - centers[b];
+          const unsigned int i = body.components[k];
+          for (unsigned int m = 0; m < 3; ++m)
+            {
+              J[k][m]     = (m == i ? 1. : 0.);
+              J[k][3 + m] = (rot.dR[m] * r)[i];
+            }
+        }
+      return J;
+    }
+
+
+    void
+    FreeRigidBodies::condense(const Vector<double> &u,
+                              const Vector<double> &R_fe,
+                              Vector<double>       &R,
+                              SparseMatrix<double> *K) const
+    {
+      AssertDimension(R_fe.size(), n_fe);
+      R.reinit(n_dofs());
+      for (types::global_dof_index i = 0; i < n_fe; ++i)
+        R[i] = R_fe[i];
+
+      std::vector<std::vector<std::array<double, 6>>> J(bodies.size());
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        {
+          const Tensor<1, 3> theta = rotation_vector(u, b);
+          J[b]                     = jacobian(b, theta);
+          const Body &body         = bodies[b];
+          const auto  q            = first_unknown(b);
+
+          // R_q = sum_s J_s^T R_s; the slaves' rows become u_s - u_s(q) = 0
+          Tensor<2, 3> M; // sum_s R_s e_i (X - c)^T, for the geometric term
+          for (unsigned int k = 0; k < body.dofs.size(); ++k)
+            {
+              const double Rs = R_fe[body.dofs[k]];
+              for (unsigned int m = 0; m < 6; ++m)
+                R[q + m] += J[b][k][m] * Rs;
+              R[body.dofs[k]]      = 0.;
+              const Tensor<1, 3> r = body.X[k] - centers[b];
+              for (unsigned int j = 0; j < 3; ++j)
+                M[body.components[k]][j] += Rs * r[j];
+            }
+          if (K == nullptr)
+            continue;
+          // sum_s R_s d2u_s/dtheta_k dtheta_l = d2R_kl : M
+          const RotationDerivatives rot = rotation(theta);
+          for (unsigned int k = 0; k < 3; ++k)
+            for (unsigned int l = 0; l < 3; ++l)
+              K->add(q + 3 + k, q + 3 + l, scalar_product(rot.d2R[k][l], M));
+        }
+      if (K == nullptr)
+        return;
+
+      // K T: every slave column s moves to its body's columns, times J_s
+      for (types::global_dof_index i = 0; i < K->m(); ++i)
+        for (auto e = K->begin(i); e != K->end(i); ++e)
+          {
+            const auto j = e->column();
+            if (j >= n_fe || owner[j] < 0 || e->value() == 0.)
+              continue;
+            const double v = e->value();
+            e->value()     = 0.;
+            const auto &Js = J[owner[j]][slave_index[j]];
+            const auto  q  = first_unknown(owner[j]);
+            for (unsigned int m = 0; m < 6; ++m)
+              if (Js[m] != 0.)
+                K->add(i, q + m, v * Js[m]);
+          }
+      // T^T (K T): every slave row moves to its body's rows; then identity
+      for (types::global_dof_index s = 0; s < n_fe; ++s)
+        if (owner[s] >= 0)
+          {
+            const auto &Js = J[owner[s]][slave_index[s]];
+            const auto  q  = first_unknown(owner[s]);
+            for (auto e = K->begin(s); e != K->end(s); ++e)
+              {
+                const double v = e->value();
+                if (v == 0.)
+                  continue;
+                e->value() = 0.;
+                for (unsigned int m = 0; m < 6; ++m)
+                  if (Js[m] != 0.)
+                    K->add(q + m, e->column(), Js[m] * v);
+              }
+            K->set(s, s, 1.);
+          }
+    }
+
+
+    void
+    FreeRigidBodies::add_couplings(const DynamicSparsityPattern &fe,
+                                   DynamicSparsityPattern       &full) const
+    {
+      AssertDimension(fe.n_rows(), n_fe);
+      full.reinit(n_dofs(), n_dofs());
+      std::vector<types::global_dof_index> targets_i, targets_j;
+      const auto targets = [&](const types::global_dof_index         i,
+                               std::vector<types::global_dof_index> &t) {
+        t.assign(1, i);
+        if (i < n_fe && owner[i] >= 0)
+          for (unsigned int m = 0; m < 6; ++m)
+            t.push_back(first_unknown(owner[i]) + m);
+      };
+      for (types::global_dof_index i = 0; i < n_fe; ++i)
+        {
+          targets(i, targets_i);
+          for (auto e = fe.begin(i); e != fe.end(i); ++e)
+            {
+              targets(e->column(), targets_j);
+              for (const auto a : targets_i)
+                for (const auto c : targets_j)
+                  full.add(a, c);
+            }
+        }
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        for (unsigned int m = 0; m < 6; ++m)
+          for (unsigned int l = 0; l < 6; ++l)
+            full.add(first_unknown(b) + m, first_unknown(b) + l);
+    }
+
+
+    Vector<double>
+    FreeRigidBodies::condense_diagonal(const Vector<double> &D_fe) const
+    {
+      Vector<double> D(n_dofs());
+      for (types::global_dof_index i = 0; i < n_fe; ++i)
+        D[i] = owner[i] >= 0 ? 0. : D_fe[i];
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        {
+          const auto J = jacobian(b, Tensor<1, 3>());
+          for (unsigned int k = 0; k < J.size(); ++k)
+            for (unsigned int m = 0; m < 6; ++m)
+              D[first_unknown(b) + m] +=
+                J[k][m] * J[k][m] * D_fe[bodies[b].dofs[k]];
+        }
+      return D;
+    }
+
+
+    std::vector<types::global_dof_index>
+    FreeRigidBodies::translation_unknowns(const unsigned int c) const
+    {
+      std::vector<types::global_dof_index> result;
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        result.push_back(first_unknown(b) + c);
+      return result;
+    }
+  } // namespace Rigid
+} // namespace TissueContact
