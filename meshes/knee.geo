@@ -68,7 +68,12 @@ b_pat   = 0.009;  // condyles
 c_pat   = 0.022;
 gap_pf  = 0.003;
 
-gap_s   = 0.0005; // initial gap between skin-fat and the sliding parts
+// initial gap between skin-fat and the sliding parts: 0.5 mm plus the chord
+// error of the cavity around the condyles (a concave wall meshed with
+// n_2pi elements per circle bulges by r (1 - cos(pi / n_2pi)) into what it
+// encloses: 4.6 mm at n_2pi = 5, 1.8 mm at 8), so that the meshed
+// surfaces start apart and the scene starts free of stress
+gap_s   = 0.0005 + 1.2 * r_cond * (1 - Cos(Pi / n_2pi));
 
 // The sliding parts are built twice: as bodies (d = 0) and, enlarged by
 // d = gap_s, as the cavity cut out of the skin-fat layer, so that the
@@ -76,12 +81,22 @@ gap_s   = 0.0005; // initial gap between skin-fat and the sliding parts
 Macro SlidingParts
   // femur: a shaft and two condyles
   v1 = newv; Cylinder(v1) = {0, 0, 0, 0, 0, L_thigh + d, r_femur + d};
-  v2 = newv; Cylinder(v2) = {gap_c / 2 - d, y_cond, 0, w_cond + 2 * d, 0, 0, r_cond + d};
-  v3 = newv; Cylinder(v3) = {-gap_c / 2 + d, y_cond, 0, -w_cond - 2 * d, 0, 0, r_cond + d};
+  If (d == 0)
+    // two condyles, the intercondylar notch between them
+    v2 = newv; Cylinder(v2) = {gap_c / 2, y_cond, 0, w_cond, 0, 0, r_cond};
+    v3 = newv; Cylinder(v3) = {-gap_c / 2, y_cond, 0, -w_cond, 0, 0, r_cond};
+    tools() = {v2, v3};
+  Else
+    // the cavity spans the notch: one cylinder over both condyles (the
+    // skin does not reach into the notch)
+    v2 = newv; Cylinder(v2) = {-gap_c / 2 - w_cond - d, y_cond, 0, gap_c + 2 * w_cond + 2 * d, 0, 0, r_cond + d};
+    tools() = {v2};
+  EndIf
   // the bridge between the condyles, not tangent to them (a tangent face
   // would leave slivers)
   v4 = newv; Box(v4) = {-gap_c / 2 - w_cond - d, y_cond - 0.8 * r_cond - d, 0, gap_c + 2 * w_cond + 2 * d, 1.6 * r_cond + 2 * d, 0.6 * r_cond};
-  f() = BooleanUnion{ Volume{v1}; Delete; }{ Volume{v2, v3, v4}; Delete; };
+  tools() += v4;
+  f() = BooleanUnion{ Volume{v1}; Delete; }{ Volume{tools()}; Delete; };
   // patella: an ellipsoid
   v5 = newv; Sphere(v5) = {0, 0, 0, 1};
   Dilate {{0, 0, 0}, {a_pat + d, b_pat + d, c_pat + d}} { Volume{v5}; }

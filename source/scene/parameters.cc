@@ -84,12 +84,22 @@ namespace TissueContact
                         "boundary ids 0..5 on the faces x-, x+, y-, y+, z-, "
                         "z+); file: a gmsh .msh file (format 2.2 or 4) whose "
                         "physical volumes are material ids and physical "
-                        "surfaces boundary ids.",
-                        Patterns::Selection("box|file"));
+                        "surfaces boundary ids; geo: a gmsh geometry (.geo) "
+                        "meshed at the start of the run by the program gmsh "
+                        "(gmsh -3 with the Gmsh options), with the same "
+                        "meaning of its physical groups.",
+                        Patterns::Selection("box|file|geo"));
       prm.add_parameter("File",
                         file,
-                        "The gmsh mesh file (Source = file); relative to the "
-                        "folder of this parameter file.",
+                        "The gmsh mesh file (Source = file) or geometry "
+                        "(Source = geo); relative to the folder of this "
+                        "parameter file.",
+                        Patterns::Anything());
+      prm.add_parameter("Gmsh options",
+                        gmsh_options,
+                        "For Source = geo: options passed to gmsh, e.g. "
+                        "'-setnumber h 0.012' to set the geometry's "
+                        "parameter h (see the comments of the .geo file).",
                         Patterns::Anything());
       prm.add_parameter("Box lower corner",
                         lower,
@@ -125,10 +135,10 @@ namespace TissueContact
     void
     MeshParameters::parse_parameters(ParameterHandler &, const std::string &dir)
     {
-      if (source == "file")
+      if (source == "file" || source == "geo")
         {
           AssertThrow(!file.empty(),
-                      ExcMessage("Mesh: Source = file needs a File"));
+                      ExcMessage("Mesh: Source = " + source + " needs a File"));
           file = resolve(file, dir);
         }
       AssertThrow(scale > 0., ExcMessage("Mesh: Scale must be positive"));

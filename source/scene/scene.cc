@@ -7,6 +7,10 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <unistd.h>
+
+#include <deque>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -41,6 +45,48 @@ namespace TissueContact
     }
 
 
+    namespace
+    {
+      /** Mesh the gmsh geometry @p geo with `gmsh -3 @p options` into a
+       * temporary .msh file (format 2.2) and return its name; an error
+       * quoting gmsh's last lines if gmsh is missing or fails. */
+      std::string
+      mesh_geometry(const std::string &geo, const std::string &options)
+      {
+        namespace fs = std::filesystem;
+        const std::string stem =
+          (fs::temp_directory_path() /
+           ("tissue-contact-" + std::to_string(::getpid())))
+            .string();
+        const std::string msh = stem + ".msh", log = stem + ".log";
+        const std::string cmd = "gmsh -3 -format msh22 " + options + " '" +
+                                geo + "' -o '" + msh + "' > '" + log + "' 2>&1";
+        const int   status = std::system(cmd.c_str());
+        const bool  ok     = status == 0 && fs::exists(msh);
+        std::string tail;
+        {
+          std::ifstream           in(log);
+          std::deque<std::string> lines;
+          for (std::string line; std::getline(in, line);)
+            {
+              lines.push_back(line);
+              if (lines.size() > 5)
+                lines.pop_front();
+            }
+          for (const auto &line : lines)
+            tail += "\n  " + line;
+        }
+        fs::remove(log);
+        AssertThrow(ok,
+                    ExcMessage("gmsh could not mesh the geometry '" + geo +
+                               "' (Mesh: Source = geo; is gmsh installed? "
+                               "command: " +
+                               cmd + "); its last output:" + tail));
+        return msh;
+      }
+    } // namespace
+
+
     void
     Scene::create_mesh()
     {
@@ -71,9 +117,11 @@ namespace TissueContact
           AssertThrow(std::ifstream(m.file).good(),
                       ExcMessage("mesh file '" + m.file +
                                  "' does not exist or cannot be read"));
+          const std::string msh =
+            m.source == "geo" ? mesh_geometry(m.file, m.gmsh_options) : m.file;
           GridIn<3> grid_in;
           grid_in.attach_triangulation(triangulation);
-          std::ifstream in(m.file);
+          std::ifstream in(msh);
           try
             {
               grid_in.read_msh(in);
@@ -85,6 +133,8 @@ namespace TissueContact
                             "cannot read mesh file '" + m.file +
                             "' as a gmsh .msh file: " + error_message(e)));
             }
+          if (m.source == "geo")
+            std::filesystem::remove(msh);
         }
       if (m.scale != 1.)
         GridTools::scale(m.scale, triangulation);

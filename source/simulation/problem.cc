@@ -5,6 +5,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <limits>
 #include <numeric>
 
 namespace TissueContact
@@ -59,6 +60,24 @@ namespace TissueContact
     return contact && !scene.parameters.contact.pairs.empty() ?
              &contact->vertex_depth() :
              nullptr;
+  }
+
+
+  double
+  Problem::max_relative_penetration(const Vector<double> &u) const
+  {
+    if (!contact || scene.parameters.contact.pairs.empty())
+      return 0.;
+    std::vector<double> h(scene.triangulation.n_vertices(),
+                          std::numeric_limits<double>::max());
+    for (const auto &cell : scene.triangulation.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        h[cell->vertex_index(v)] =
+          std::min(h[cell->vertex_index(v)], cell->diameter());
+    double ratio = 0.;
+    for (const auto &[v, d] : contact->body_penetrations(displacement(u)))
+      ratio = std::max(ratio, d / h[v]);
+    return ratio;
   }
 
 

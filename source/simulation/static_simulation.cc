@@ -124,7 +124,9 @@ namespace TissueContact
     if (contact && !p.contact.pairs.empty())
       out << "  penetration (largest material depth reached by a contact "
              "vertex inside a paired body): "
-          << contact->max_body_penetration(u_fe) << "\n"
+          << contact->max_body_penetration(u_fe) << ", at most "
+          << nonlinear_problem.max_relative_penetration(u) * 100.
+          << " % of the local element size\n"
           << "  contact tree: rebuilt " << contact->n_tree_rebuilds()
           << " times (a vertex moved more than the mean element size)\n";
     if (const auto *rigid = nonlinear_problem.free_rigid_bodies())

@@ -20,11 +20,13 @@ namespace TissueContact
   {
     using namespace dealii;
 
-    /** prm subsection "Mesh": a gmsh file or a generated box. */
+    /** prm subsection "Mesh": a gmsh mesh file, a gmsh geometry meshed by
+     * running gmsh, or a generated box. */
     struct MeshParameters
     {
       std::string               source = "box";
       std::string               file;
+      std::string               gmsh_options;
       Point<3>                  lower, upper{1., 1., 1.};
       std::vector<unsigned int> subdivisions{1, 1, 1};
       double                    distortion = 0.;

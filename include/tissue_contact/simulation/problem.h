@@ -84,6 +84,12 @@ namespace TissueContact
       if (rigid)
         rigid->complete(u);
     }
+    /** The largest penetration of a contact vertex into a paired body
+     * (Contact::ContactAssembler::body_penetrations()) divided by the
+     * local element size there, the smallest diameter of the cells around
+     * the vertex; 0 without body pairs. */
+    double
+    max_relative_penetration(const Vector<double> &u) const;
     /** Number of prescribed DoFs. */
     std::size_t
     n_prescribed() const
