@@ -31,14 +31,13 @@
 // n_2pi elements around a full circle of a curved surface (measured with
 // gmsh 4.8; both meshes pass tissue-contact's mesh checks):
 //   gmsh -3 -setnumber h 0.012 -setnumber n_2pi 8 knee.geo
-//     40 217 tetrahedra, 9 409 nodes, 10 675 contact triangles: the
-//     sources' scale;
-//   gmsh -3 -setnumber h 0.04 -setnumber n_2pi 5 knee.geo
-//     5 602 tetrahedra, 1 611 nodes: the coarsest that meshes (coarser
-//     settings fail in gmsh: the 0.5 mm skin gap against elements of 4 cm).
-// The test scene/knee_mesh meshes the coarse one and checks the interfaces.
-// WORK IN PROGRESS (issue 10, item 1): the suite's coarse knee of about
-// 2 000 tetrahedra needs a simpler skin cavity.
+//     38 588 tetrahedra, 9 194 nodes, 10 787 contact triangles: the
+//     sources' scale (prm/knee_flexion.prm);
+//   gmsh -3 -setnumber h 0.06 -setnumber n_2pi 5 -setnumber pat_refine 2
+//     3 737 tetrahedra, 1 158 nodes: the suite's coarse knee (the count
+//     hardly falls below: the skin-fat layer and the small parts need
+//     their few elements across).
+// The tests scene/knee_mesh and scene/knee_flexion mesh the coarse one.
 
 SetFactory("OpenCASCADE");
 If (!Exists(h))

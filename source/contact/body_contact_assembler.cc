@@ -362,6 +362,25 @@ namespace TissueContact
     std::vector<std::pair<unsigned int, double>>
     BodyContactAssembler::penetrations(const Vector<double> &u) const
     {
+      std::vector<double> per_pair;
+      return penetrations(u, per_pair);
+    }
+
+
+    std::vector<double>
+    BodyContactAssembler::pair_penetrations(const Vector<double> &u) const
+    {
+      std::vector<double> per_pair;
+      penetrations(u, per_pair);
+      return per_pair;
+    }
+
+
+    std::vector<std::pair<unsigned int, double>>
+    BodyContactAssembler::penetrations(const Vector<double> &u,
+                                       std::vector<double>  &per_pair) const
+    {
+      per_pair.assign(pairs.size(), 0.);
       if (pairs.empty())
         return {};
       const std::vector<Point<3>> x = surface.positions(u);
@@ -375,7 +394,7 @@ namespace TissueContact
       for_each_candidate(
         x,
         0.,
-        [&](const unsigned int t, const unsigned int k, const BodyContact &) {
+        [&](const unsigned int t, const unsigned int k, const BodyContact &p) {
           const std::array<Point<3>, 4> tet = {
             {x[tets[k][0]], x[tets[k][1]], x[tets[k][2]], x[tets[k][3]]}};
           for (const unsigned int v : surface.triangles[t])
@@ -387,7 +406,9 @@ namespace TissueContact
               double g = 0.;
               for (unsigned int j = 0; j < 4; ++j)
                 g += polygon.vertex[0].lambda[j] * depth[tets[k][j]];
-              depth_of[v] = std::max(depth_of[v], g);
+              depth_of[v]      = std::max(depth_of[v], g);
+              double &pair_max = per_pair[&p - pairs.data()];
+              pair_max         = std::max(pair_max, g);
             }
         });
       return {depth_of.begin(), depth_of.end()};

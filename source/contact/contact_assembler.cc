@@ -104,6 +104,13 @@ namespace TissueContact
     }
 
 
+    std::vector<double>
+    ContactAssembler::pair_penetrations(const Vector<double> &u) const
+    {
+      return bodies ? bodies->pair_penetrations(u) : std::vector<double>();
+    }
+
+
     std::vector<std::pair<unsigned int, double>>
     ContactAssembler::body_penetrations(const Vector<double> &u) const
     {

@@ -126,8 +126,18 @@ namespace TissueContact
              "vertex inside a paired body): "
           << contact->max_body_penetration(u_fe) << ", at most "
           << nonlinear_problem.max_relative_penetration(u) * 100.
-          << " % of the local element size\n"
-          << "  contact tree: rebuilt " << contact->n_tree_rebuilds()
+          << " % of the local element size\n";
+    if (contact && p.contact.pairs.size() > 1)
+      {
+        const auto per_pair = contact->pair_penetrations(u_fe);
+        for (unsigned int i = 0; i < per_pair.size(); ++i)
+          out << "    pair " << i << " (surface body "
+              << int(p.contact.pairs[i].surface_body) << " in volume body "
+              << int(p.contact.pairs[i].volume_body)
+              << "): largest penetration " << per_pair[i] << "\n";
+      }
+    if (contact && !p.contact.pairs.empty())
+      out << "  contact tree: rebuilt " << contact->n_tree_rebuilds()
           << " times (a vertex moved more than the mean element size)\n";
     if (const auto *rigid = nonlinear_problem.free_rigid_bodies())
       for (unsigned int b = 0; b < rigid->n_bodies(); ++b)

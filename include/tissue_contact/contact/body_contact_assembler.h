@@ -94,7 +94,17 @@ namespace TissueContact
       std::vector<std::pair<unsigned int, double>>
       penetrations(const Vector<double> &u) const;
 
+      /** The largest penetration of each declared pair (in the order of
+       * the pairs), as penetrations() measures it. */
+      std::vector<double>
+      pair_penetrations(const Vector<double> &u) const;
+
     private:
+      /** penetrations(), and the largest of each pair in @p per_pair. */
+      std::vector<std::pair<unsigned int, double>>
+      penetrations(const Vector<double> &u,
+                   std::vector<double>  &per_pair) const;
+
       /** Area integration or point collocation: the energy and the kernel
        * of one pair, chosen once when the pair is declared. */
       struct Method

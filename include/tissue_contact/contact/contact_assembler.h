@@ -79,6 +79,11 @@ namespace TissueContact
       std::vector<std::pair<unsigned int, double>>
       body_penetrations(const Vector<double> &u) const;
 
+      /** BodyContactAssembler::pair_penetrations() (empty without
+       * pairs). */
+      std::vector<double>
+      pair_penetrations(const Vector<double> &u) const;
+
       /** ObstacleAssembler::force() (zero without obstacles). */
       Tensor<1, 3>
       obstacle_force(const Vector<double> &u) const;
