@@ -1,0 +1,69 @@
+// The knee of prm/knee_flexion.prm on the coarse mesh of meshes/knee.geo
+// (h 0.06: about 3 700 tetrahedra, 1 200 vertices) flexed to 90 degrees in
+// 30 increments of 3 degrees: femur fixed, tibia rotated, the patella a free
+// rigid body held by its ligament and tendon, the skin-fat layer sliding
+// over everything and folding onto itself behind the knee. The log prints
+// the angle reached, increments, cut-backs, Newton iterations, the largest
+// penetration as a fraction of the local element size (must stay below
+// 10 %), and the patella's motion: it must travel down and around the
+// condyles (its center moves backwards and down, it turns with the tibia).
+
+#include "../tests.h"
+
+#include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/simulation/static_simulation.h>
+
+using namespace dealii;
+using namespace TissueContact;
+using namespace TissueContactTests;
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+  const double      angle = 90.;
+  const std::string prm   = project_prm(
+    "knee_flexion.prm",
+    {{"-setnumber h 0.012 -setnumber n_2pi 8",
+        "-setnumber h 0.06 -setnumber n_2pi 5 -setnumber pat_refine 2"},
+       {"Rotation angle  = -150", "Rotation angle  = -90"},
+       {"increment = 0.02", "increment = 0.0333333333333"},
+       {"Type               = GMRES+AMG", "Type               = direct"}});
+  std::ostringstream log;
+  StaticSimulation   sim(Scene::SceneParameters::from_string(prm), log);
+  SolveStatistics    statistics;
+  try
+    {
+      statistics = sim.solve_quietly();
+    }
+  catch (const std::exception &e)
+    {
+      deallog << "the flexion stopped: " << error_message(e) << std::endl;
+      return 0;
+    }
+  const Problem     &problem     = sim.problem();
+  const auto        &u           = sim.solution();
+  const auto        &rigid       = *problem.free_rigid_bodies();
+  const Tensor<1, 3> t           = rigid.translation(u, 0);
+  const Tensor<1, 3> theta       = rigid.rotation_vector(u, 0);
+  const double       penetration = problem.max_relative_penetration(u);
+
+  deallog << "mesh: " << problem.get_scene().triangulation.n_active_cells()
+          << " tetrahedra, " << problem.n_dofs() << " unknowns, "
+          << problem.contact_assembler()->n_triangles() << " contact triangles"
+          << std::endl
+          << "flexed to " << int(angle) << " degrees in "
+          << statistics.increments << " increments (" << statistics.cutbacks
+          << " cut back), " << statistics.newton_iterations
+          << " Newton iterations" << std::endl
+          << "largest penetration / local element size " << std::setprecision(2)
+          << penetration
+          << " (below 0.1: " << (penetration < 0.1 ? "yes" : "no") << ")"
+          << std::endl
+          << "patella: center moved by " << std::fixed << std::setprecision(1)
+          << 1000. * t << " mm (|t| = " << 1000. * t.norm()
+          << " mm), turned by " << theta.norm() * 180. / M_PI
+          << " degrees about " << std::setprecision(2) << theta / theta.norm()
+          << std::endl;
+}
