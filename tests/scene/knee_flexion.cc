@@ -28,8 +28,7 @@ main(int argc, char **argv)
     {{"-setnumber h 0.012 -setnumber n_2pi 8",
         "-setnumber h 0.06 -setnumber n_2pi 5 -setnumber pat_refine 2"},
        {"Rotation angle  = -150", "Rotation angle  = -90"},
-       {"increment = 0.02", "increment = 0.0333333333333"},
-       {"Type               = GMRES+AMG", "Type               = direct"}});
+       {"increment = 0.02", "increment = 0.0333333333333"}});
   std::ostringstream log;
   StaticSimulation   sim(Scene::SceneParameters::from_string(prm), log);
   SolveStatistics    statistics;
