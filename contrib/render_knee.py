@@ -70,7 +70,7 @@ def side_camera(view):
     view.CameraViewUp = [0.0, 0.0, 1.0]
     view.CameraParallelProjection = 1
     view.ResetCamera()
-    view.CameraParallelScale = 0.19
+    view.CameraParallelScale = 0.24
 
 
 def colour_by_body(display):
@@ -145,7 +145,7 @@ def main():
     side_camera(view)
     view.CameraPosition = [0.6, -0.8, 0.0]  # from behind and the side
     view.ResetCamera()
-    view.CameraParallelScale = 0.19
+    view.CameraParallelScale = 0.24
     Render(view)
     SaveScreenshot(os.path.join(args.figures, "knee_skin_depth.png"), view,
                    ImageResolution=[900, 900])

@@ -1,13 +1,21 @@
 // A parametric knee for the flexion scene (dissertation ch. 7, paper sec. 6).
 // The Visible Human meshes are not available: every part is a simple solid of
-// about human size, in metres. The leg axis is z (thigh up), the knee axis
-// (through the femoral condyles) is the x axis, the front of the leg is +y.
+// about human size, in metres. The leg axis is z (thigh up), the front of
+// the leg is +y; the femur's shaft lies on the z axis, the tibia's at
+// y = y_tib, the knee axis (through the femoral condyles' centres, along x) at y = y_cond,
+// z = 0, behind the shafts as in a real femur, so that the tibia, rotated
+// about it, clears the femur all the way to 150 degrees (checked with the
+// bones' nodes; with the condyles under the shaft the tibial plateau swept
+// through the femur from 95 degrees on).
 //
 // Bodies, physical volumes = material ids:
-//   1 femur: a shaft and two condyles (cylinders along x) at the knee
-//   2 tibia: a shaft with a wider plateau below the condyles
-//   3 patella: an ellipsoid in front of the condyles
-//   4 patellar ligament: from the patella's lower end to the tibial plateau
+//   1 femur: a shaft, the trochlea at its lower end (a cylinder along x)
+//     and two condyles (cylinders along x) behind it
+//   2 tibia: a shaft with a wider plateau below the condyles and the
+//     tuberosity in front
+//   3 patella: an ellipsoid in front of the trochlea
+//   4 patellar ligament: a cylinder from the patella's lower end to the
+//     tuberosity
 //   5 quadriceps tendon: from the patella's upper end up the front of the
 //     femur
 //   6 quadriceps muscle: in front of the femur shaft, above the tendon
@@ -30,11 +38,11 @@
 // The mesh size: h, h / pat_refine around the patella (default 3), and
 // n_2pi elements around a full circle of a curved surface (measured with
 // gmsh 4.8; both meshes pass tissue-contact's mesh checks):
-//   gmsh -3 -setnumber h 0.012 -setnumber n_2pi 8 knee.geo
-//     38 588 tetrahedra, 9 194 nodes, 10 787 contact triangles: the
+//   gmsh -3 -setnumber h 0.0125 -setnumber n_2pi 8 knee.geo
+//     41 193 tetrahedra, 10 007 nodes, 12 211 contact triangles: the
 //     sources' scale (prm/knee_flexion.prm);
 //   gmsh -3 -setnumber h 0.06 -setnumber n_2pi 5 -setnumber pat_refine 2
-//     3 737 tetrahedra, 1 158 nodes: the suite's coarse knee (the count
+//     4 462 tetrahedra, 1 422 nodes: the suite's coarse knee (the count
 //     hardly falls below: the skin-fat layer and the small parts need
 //     their few elements across).
 // The tests scene/knee_mesh and scene/knee_flexion mesh the coarse one.
@@ -50,22 +58,27 @@ If (!Exists(n_2pi))
   n_2pi = 6; // elements around a full circle of a curved surface
 EndIf
 
-R_leg   = 0.065;  // radius of the leg (skin surface)
-L_thigh = 0.16;   // from the knee axis up to the thigh's cut
+R_leg   = 0.065;  // radius of the leg (skin surface), about the shaft axis
+L_thigh = 0.28;   // from the knee axis up to the thigh's cut: long enough for a
+                  // quadriceps that can lengthen by the patella's travel
 L_shin  = 0.16;   // from the knee axis down to the shin's cut
-r_femur = 0.022;  // femur shaft
-r_cond  = 0.024;  // condyles: cylinders along x, w_cond wide each,
-w_cond  = 0.022;  // gap_c apart (the intercondylar notch), y_cond in front
-gap_c   = 0.008;  // of the shaft axis
-y_cond  = 0.004;
-r_tibia = 0.020;  // tibia shaft
-r_plat  = 0.034;  // tibial plateau, t_plat thick, gap_ft below the
-t_plat  = 0.020;  // condyles (cartilage and menisci are not modelled)
+r_femur = 0.022;  // femur shaft (axis x = y = 0), rounded at its lower end
+                  // by the trochlea, a cylinder along x of the same radius
+r_cond  = 0.024;  // condyles: cylinders along x, w_cond wide each, gap_c
+w_cond  = 0.022;  // apart (the intercondylar notch), their axis (the knee
+gap_c   = 0.008;  // axis) y_cond behind the shaft axis, as in a real femur:
+y_cond  = -0.030; // so the tibia can swing round behind it to 150 degrees
+r_tibia = 0.020;  // tibia shaft, its axis y_tib
+y_tib   = -0.015;
+r_plat  = 0.026;  // tibial plateau, t_plat thick, gap_ft below the
+t_plat  = 0.010;  // condyles (cartilage and menisci are not modelled)
 gap_ft  = 0.004;
 a_pat   = 0.017;  // patella: semi-axes in x, y, z, gap_pf in front of the
-b_pat   = 0.009;  // condyles
+b_pat   = 0.009;  // trochlea, its centre z_pat above the knee axis
 c_pat   = 0.022;
 gap_pf  = 0.003;
+z_pat   = 0.020;
+r_lig   = 0.006;  // patellar ligament: a cylinder of radius r_lig
 
 // initial gap between skin-fat and the sliding parts: 0.5 mm plus the chord
 // error of the cavity around the condyles (a concave wall meshed with
@@ -78,32 +91,31 @@ gap_s   = 0.0005 + 1.2 * r_cond * (1 - Cos(Pi / n_2pi));
 // d = gap_s, as the cavity cut out of the skin-fat layer, so that the
 // skin-fat touches only the tibia (to which it is attached).
 Macro SlidingParts
-  // femur: a shaft and two condyles
+  // femur: a shaft, the trochlea at its lower end and two condyles behind
   v1 = newv; Cylinder(v1) = {0, 0, 0, 0, 0, L_thigh + d, r_femur + d};
+  w_troch = gap_c / 2 + w_cond - 0.002; // a little narrower than the
+                                        // condyles: no coplanar end faces
+  v4 = newv; Cylinder(v4) = {-w_troch - d, 0, 0, 2 * w_troch + 2 * d, 0, 0, r_femur + d};
   If (d == 0)
     // two condyles, the intercondylar notch between them
     v2 = newv; Cylinder(v2) = {gap_c / 2, y_cond, 0, w_cond, 0, 0, r_cond};
     v3 = newv; Cylinder(v3) = {-gap_c / 2, y_cond, 0, -w_cond, 0, 0, r_cond};
-    tools() = {v2, v3};
+    tools() = {v2, v3, v4};
   Else
     // the cavity spans the notch: one cylinder over both condyles (the
     // skin does not reach into the notch)
     v2 = newv; Cylinder(v2) = {-gap_c / 2 - w_cond - d, y_cond, 0, gap_c + 2 * w_cond + 2 * d, 0, 0, r_cond + d};
-    tools() = {v2};
+    tools() = {v2, v4};
   EndIf
-  // the bridge between the condyles, not tangent to them (a tangent face
-  // would leave slivers)
-  v4 = newv; Box(v4) = {-gap_c / 2 - w_cond - d, y_cond - 0.8 * r_cond - d, 0, gap_c + 2 * w_cond + 2 * d, 1.6 * r_cond + 2 * d, 0.6 * r_cond};
-  tools() += v4;
   f() = BooleanUnion{ Volume{v1}; Delete; }{ Volume{tools()}; Delete; };
   // patella: an ellipsoid
   v5 = newv; Sphere(v5) = {0, 0, 0, 1};
   Dilate {{0, 0, 0}, {a_pat + d, b_pat + d, c_pat + d}} { Volume{v5}; }
   Translate {0, y_pat, z_pat} { Volume{v5}; }
   p() = {v5};
-  // patellar ligament: from the patella's lower end to the plateau's front
-  // (it reaches back to y = 0.030, into the plateau of radius r_plat)
-  v6 = newv; Box(v6) = {-0.008 - d, 0.030 - d, z_plat - 0.012 - d, 0.016 + 2 * d, y_pat + 0.004 - 0.030 + 2 * d, z_pat - c_pat + 0.006 - (z_plat - 0.012) + 2 * d};
+  // patellar ligament: a cylinder from inside the tibial tuberosity up to
+  // inside the patella's lower end, clear of the trochlea
+  v6 = newv; Cylinder(v6) = {0, y_lig0, z_lig0, 0, y_lig1 - y_lig0, z_lig1 - z_lig0, r_lig + d};
   l() = {v6};
   // quadriceps tendon: from the patella's upper end up to z_m
   v7 = newv; Box(v7) = {-0.012 - d, y_pat - 0.005 - d, z_pat + c_pat - 0.006 - d, 0.024 + 2 * d, 0.010 + 2 * d, z_m - (z_pat + c_pat - 0.006) + 2 * d};
@@ -114,14 +126,20 @@ Macro SlidingParts
 Return
 
 z_plat = -r_cond - gap_ft; // top of the tibial plateau
-y_pat  = y_cond + r_cond + gap_pf + b_pat;
-z_pat  = 0.004;
-z_m    = 0.10;             // tendon-muscle junction
+y_pat  = r_femur + gap_pf + b_pat;
+z_m    = 0.06;             // tendon-muscle junction
+// the ligament's ends: in the tuberosity and in the patella
+y_lig0 = y_tib + r_plat + 0.004;
+z_lig0 = z_plat - t_plat - 0.010;
+y_lig1 = y_pat;
+z_lig1 = z_pat - c_pat + 0.004;
 
-// tibia: plateau and shaft
-Cylinder(1000) = {0, 0, z_plat - t_plat, 0, 0, t_plat, r_plat};
-Cylinder(1001) = {0, 0, -L_shin, 0, 0, L_shin + z_plat - t_plat + 0.002, r_tibia};
-tib() = BooleanUnion{ Volume{1000}; Delete; }{ Volume{1001}; Delete; };
+// tibia: plateau, shaft and, in front, the tuberosity the ligament
+// attaches to
+Cylinder(1000) = {0, y_tib, z_plat - t_plat, 0, 0, t_plat, r_plat};
+Cylinder(1001) = {0, y_tib, -L_shin, 0, 0, L_shin + z_plat - t_plat + 0.002, r_tibia};
+Box(1002) = {-0.010, y_tib, z_plat - t_plat - 0.025, 0.020, r_plat + 0.010, 0.025 + t_plat - 0.004};
+tib() = BooleanUnion{ Volume{1000}; Delete; }{ Volume{1001, 1002}; Delete; };
 
 // the bodies
 d = 0;
