@@ -15,6 +15,8 @@ Writes, from the PVD series of a run:
 The flexion angle of a step is its load factor (the PVD time) times the
 angle given with --angle (default 150 degrees).
 Stops with a non-zero exit status if ParaView reports a warning or error.
+(Under xvfb-run, ParaView 5.11 from Debian 12 sometimes aborts at start with a
+GLX error of the virtual display; running it again works.)
 """
 
 import argparse
@@ -115,8 +117,9 @@ def main():
     # the flexion sequence
     display = Show(warp, view)
     colour_by_body(display)
+    # the steps nearest to evenly spaced angles (cut-back steps are uneven)
     n = max(args.frames, 2)
-    picks = sorted({times[round(i * (len(times) - 1) / (n - 1))]
+    picks = sorted({min(times, key=lambda t: abs(t - i * times[-1] / (n - 1)))
                     for i in range(n)})
     for t in picks:
         view.ViewTime = t

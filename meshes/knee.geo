@@ -21,16 +21,15 @@
 //   6 quadriceps muscle: in front of the femur shaft, above the tendon
 //   7 skin-fat layer: the rest of a cylinder of radius R_leg around all
 // Attached interfaces share their nodes (one conforming mesh): tendon-muscle,
-// tendon-patella, ligament-patella, ligament-tibia and skin-fat on the tibia
-// (the shin, where the skin lies on the bone). Every other interface slides
+// tendon-patella, ligament-patella, ligament-tibia and skin-fat on the tibia's
+// shaft (the shin, where the skin lies on the bone). Every other interface slides
 // without friction: its two sides are separate surfaces with separate nodes
-// (skin-fat on femur, patella, ligament, tendon and muscle; patella on the
-// femur; femur on tibia).
+// (skin-fat on femur, patella, ligament, tendon, muscle and the tibia's
+// plateau and tuberosity; patella on the femur; femur on tibia).
 //
 // Physical surfaces = boundary ids (every boundary face has one):
 //   11..17 the sliding surface of body 1..7 (for skin-fat: its inner side;
-//          the tibia's is the little of it that faces the skin's gap by
-//          the ligament)
+//          for the tibia: its plateau and tuberosity)
 //   18 the skin's outer surface (self-contact behind the knee)
 //   21 the thigh's cut (z = L_thigh: femur, muscle, skin-fat)
 //   22 the shin's cut (z = -L_shin: tibia, skin-fat)
@@ -39,10 +38,10 @@
 // n_2pi elements around a full circle of a curved surface (measured with
 // gmsh 4.8; both meshes pass tissue-contact's mesh checks):
 //   gmsh -3 -setnumber h 0.0125 -setnumber n_2pi 8 knee.geo
-//     41 193 tetrahedra, 10 007 nodes, 12 211 contact triangles: the
+//     40 350 tetrahedra, 9 893 nodes, 12 389 contact triangles: the
 //     sources' scale (prm/knee_flexion.prm);
 //   gmsh -3 -setnumber h 0.06 -setnumber n_2pi 5 -setnumber pat_refine 2
-//     4 462 tetrahedra, 1 422 nodes: the suite's coarse knee (the count
+//     4 281 tetrahedra, 1 414 nodes: the suite's coarse knee (the count
 //     hardly falls below: the skin-fat layer and the small parts need
 //     their few elements across).
 // The tests scene/knee_mesh and scene/knee_flexion mesh the coarse one.
@@ -121,13 +120,16 @@ Macro SlidingParts
   v7 = newv; Box(v7) = {-0.012 - d, y_pat - 0.005 - d, z_pat + c_pat - 0.006 - d, 0.024 + 2 * d, 0.010 + 2 * d, z_m - (z_pat + c_pat - 0.006) + 2 * d};
   t() = {v7};
   // quadriceps muscle: in front of the femur shaft, from z_m to the cut
-  v8 = newv; Box(v8) = {-0.040 - d, r_femur + 0.003 - d, z_m - d, 0.080 + 2 * d, 0.030 + 2 * d, L_thigh - z_m + 2 * d};
+  v8 = newv; Box(v8) = {-0.040 - d, r_femur + 0.003 - d, z_m - d, 0.080 + 2 * d, t_mus + 2 * d, L_thigh - z_m + 2 * d};
   m() = {v8};
 Return
 
 z_plat = -r_cond - gap_ft; // top of the tibial plateau
 y_pat  = r_femur + gap_pf + b_pat;
 z_m    = 0.06;             // tendon-muscle junction
+t_mus  = 0.020;            // thickness of the muscle (front to back): 2 cm
+                           // of skin-fat in front of it (with 3 cm, the
+                           // muscle pressed through the skin at 109 degrees)
 // the ligament's ends: in the tuberosity and in the patella
 y_lig0 = y_tib + r_plat + 0.004;
 z_lig0 = z_plat - t_plat - 0.010;
@@ -156,7 +158,12 @@ mus() = m();
 // the cavity
 d = gap_s;
 Call SlidingParts;
-cavity() = BooleanUnion{ Volume{f()}; Delete; }{ Volume{p(), l(), t(), m()}; Delete; };
+// the tibia's plateau and tuberosity slide too (the skin-fat is attached
+// to the shaft only): at deep flexion the skin behind the plateau must be
+// free to move out of the way of the femur
+c1 = newv; Cylinder(c1) = {0, y_tib, z_plat - t_plat - d, 0, 0, t_plat + 2 * d, r_plat + d};
+c2 = newv; Box(c2) = {-0.010 - d, y_tib, z_plat - t_plat - 0.025 - d, 0.020 + 2 * d, r_plat + 0.010 + d, 0.025 + t_plat - 0.004 + 2 * d};
+cavity() = BooleanUnion{ Volume{f()}; Delete; }{ Volume{p(), l(), t(), m(), c1, c2}; Delete; };
 Cylinder(2000) = {0, 0, -L_shin, 0, 0, L_shin + L_thigh, R_leg};
 skn() = BooleanDifference{ Volume{2000}; Delete; }{ Volume{cavity(), tib()}; };
 Recursive Delete { Volume{cavity()}; }
