@@ -44,7 +44,8 @@
 //     4 281 tetrahedra, 1 414 nodes: the suite's coarse knee (the count
 //     hardly falls below: the skin-fat layer and the small parts need
 //     their few elements across).
-// The tests scene/knee_mesh and scene/knee_flexion mesh the coarse one.
+// The test scene/knee_mesh meshes it at h 0.04, n_2pi 5; scene/knee_flexion
+// at the coarse settings above.
 
 SetFactory("OpenCASCADE");
 If (!Exists(h))
