@@ -97,10 +97,9 @@ namespace TissueContact
 
 
     std::vector<std::array<double, 6>>
-    FreeRigidBodies::jacobian(const unsigned int  b,
-                              const Tensor<1, 3> &theta) const
+    FreeRigidBodies::jacobian(const unsigned int         b,
+                              const RotationDerivatives &rot) const
     {
-      const RotationDerivatives          rot  = rotation(theta);
       const Body                        &body = bodies[b];
       std::vector<std::array<double, 6>> J(body.dofs.size());
       for (unsigned int k = 0; k < body.dofs.size(); ++k)
@@ -131,10 +130,10 @@ namespace TissueContact
       std::vector<std::vector<std::array<double, 6>>> J(bodies.size());
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
-          const Tensor<1, 3> theta = rotation_vector(u, b);
-          J[b]                     = jacobian(b, theta);
-          const Body &body         = bodies[b];
-          const auto  q            = first_unknown(b);
+          const RotationDerivatives rot = rotation(rotation_vector(u, b));
+          J[b]                          = jacobian(b, rot);
+          const Body &body              = bodies[b];
+          const auto  q                 = first_unknown(b);
 
           // R_q = sum_s J_s^T R_s; the slaves' rows become u_s - u_s(q) = 0
           Tensor<2, 3> M; // sum_s R_s e_i (X - c)^T, for the geometric term
@@ -151,7 +150,6 @@ namespace TissueContact
           if (K == nullptr)
             continue;
           // sum_s R_s d2u_s/dtheta_k dtheta_l = d2R_kl : M
-          const RotationDerivatives rot = rotation(theta);
           for (unsigned int k = 0; k < 3; ++k)
             for (unsigned int l = 0; l < 3; ++l)
               K->add(q + 3 + k, q + 3 + l, scalar_product(rot.d2R[k][l], M));
@@ -235,7 +233,7 @@ namespace TissueContact
         D[i] = owner[i] >= 0 ? 0. : D_fe[i];
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
-          const auto J = jacobian(b, Tensor<1, 3>());
+          const auto J = jacobian(b, rotation(Tensor<1, 3>()));
           for (unsigned int k = 0; k < J.size(); ++k)
             for (unsigned int m = 0; m < 6; ++m)
               D[first_unknown(b) + m] +=

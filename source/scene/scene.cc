@@ -47,6 +47,27 @@ namespace TissueContact
 
     namespace
     {
+      /** Call @p f(DoF, component) once for every DoF of the cells of
+       * material id @p id (a rigid body's DoFs). */
+      template <typename F>
+      void
+      for_each_body_dof(const Discretization    &disc,
+                        const types::material_id id,
+                        const F                 &f)
+      {
+        std::vector<types::global_dof_index> dofs(disc.fe.n_dofs_per_cell());
+        std::set<types::global_dof_index>    seen;
+        for (const auto &cell : disc.dof_handler.active_cell_iterators())
+          if (cell->material_id() == id)
+            {
+              cell->get_dof_indices(dofs);
+              for (unsigned int k = 0; k < dofs.size(); ++k)
+                if (seen.insert(dofs[k]).second)
+                  f(dofs[k], disc.fe.system_to_component_index(k).first);
+            }
+      }
+
+
       /** Mesh the gmsh geometry @p geo with `gmsh -3 @p options` into a
        * temporary .msh file (format 2.2) and return its name; an error
        * quoting gmsh's last lines if gmsh is missing or fails. */
@@ -262,7 +283,6 @@ namespace TissueContact
       const std::vector<Point<3>>          X  = disc.support_points();
       const auto                          &fe = disc.fe;
       std::vector<PrescribedDof>           result;
-      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
 
       for (const auto &d : parameters.dirichlet)
@@ -290,20 +310,12 @@ namespace TissueContact
 
       for (const auto &b : parameters.bodies)
         if (b.prescribed_rigid())
-          {
-            std::set<types::global_dof_index> seen;
-            for (const auto &cell : disc.dof_handler.active_cell_iterators())
-              if (cell->material_id() == b.id)
-                {
-                  cell->get_dof_indices(dofs);
-                  for (unsigned int k = 0; k < dofs.size(); ++k)
-                    if (seen.insert(dofs[k]).second)
-                      result.push_back({dofs[k],
-                                        fe.system_to_component_index(k).first,
-                                        X[dofs[k]],
-                                        &b.rigid_motion});
-                }
-          }
+          for_each_body_dof(disc,
+                            b.id,
+                            [&](const types::global_dof_index i,
+                                const unsigned int            c) {
+                              result.push_back({i, c, X[i], &b.rigid_motion});
+                            });
       return result;
     }
 
@@ -313,26 +325,19 @@ namespace TissueContact
     {
       const std::vector<Point<3>>               X = disc.support_points();
       std::vector<Rigid::FreeRigidBodies::Body> result;
-      std::vector<types::global_dof_index>      dofs(disc.fe.n_dofs_per_cell());
       for (const auto &b : parameters.bodies)
         if (b.free_rigid)
           {
             Rigid::FreeRigidBodies::Body body;
             body.name = b.name;
-            std::set<types::global_dof_index> seen;
-            for (const auto &cell : disc.dof_handler.active_cell_iterators())
-              if (cell->material_id() == b.id)
-                {
-                  cell->get_dof_indices(dofs);
-                  for (unsigned int k = 0; k < dofs.size(); ++k)
-                    if (seen.insert(dofs[k]).second)
-                      {
-                        body.dofs.push_back(dofs[k]);
-                        body.components.push_back(
-                          disc.fe.system_to_component_index(k).first);
-                        body.X.push_back(X[dofs[k]]);
-                      }
-                }
+            for_each_body_dof(disc,
+                              b.id,
+                              [&](const types::global_dof_index i,
+                                  const unsigned int            c) {
+                                body.dofs.push_back(i);
+                                body.components.push_back(c);
+                                body.X.push_back(X[i]);
+                              });
             result.push_back(body);
           }
       return result;

@@ -43,6 +43,16 @@ namespace TissueContact
   }
 
 
+  const Vector<double> &
+  Problem::fe_displacement(const Vector<double> &u) const
+  {
+    if (!rigid)
+      return u;
+    rigid->expand(u, u_fe);
+    return u_fe;
+  }
+
+
   Vector<double>
   Problem::displacement(const Vector<double> &u) const
   {
@@ -75,7 +85,7 @@ namespace TissueContact
         h[cell->vertex_index(v)] =
           std::min(h[cell->vertex_index(v)], cell->diameter());
     double ratio = 0.;
-    for (const auto &[v, d] : contact->body_penetrations(displacement(u)))
+    for (const auto &[v, d] : contact->body_penetrations(fe_displacement(u)))
       ratio = std::max(ratio, d / h[v]);
     return ratio;
   }
@@ -94,7 +104,7 @@ namespace TissueContact
     DynamicSparsityPattern dsp(disc.n_dofs());
     DoFTools::make_sparsity_pattern(disc.dof_handler, dsp);
     if (body_contact)
-      contact->add_couplings(displacement(u),
+      contact->add_couplings(fe_displacement(u),
                              0.5 * GridTools::minimal_cell_diameter(
                                      scene.triangulation),
                              dsp);
@@ -113,7 +123,7 @@ namespace TissueContact
   Problem::update_sparsity_pattern(const Vector<double> &u)
   {
     if (!contact || scene.parameters.contact.pairs.empty() ||
-        contact->has_couplings(displacement(u), sparsity))
+        contact->has_couplings(fe_displacement(u), sparsity))
       return false;
     rebuild_sparsity_pattern(u);
     return true;
@@ -128,9 +138,7 @@ namespace TissueContact
   {
     // with free rigid bodies: assemble at the finite element displacement,
     // then condense onto the bodies' unknowns (doc/theory/07)
-    if (rigid)
-      rigid->expand(u, u_fe);
-    const Vector<double> &x = rigid ? u_fe : u;
+    const Vector<double> &x = fe_displacement(u);
     Vector<double>       &r = rigid ? R_fe : R;
     if (!assembler.assemble(x, load_factor, r, K))
       return false;
@@ -152,9 +160,7 @@ namespace TissueContact
   double
   Problem::energy(const Vector<double> &u, const double load_factor) const
   {
-    if (rigid)
-      rigid->expand(u, u_fe);
-    const Vector<double> &x = rigid ? u_fe : u;
+    const Vector<double> &x = fe_displacement(u);
     const double          W = assembler.energy(x, load_factor);
     return contact ? W + contact->energy(x) : W;
   }
@@ -165,9 +171,7 @@ namespace TissueContact
                   const double          load_factor,
                   std::vector<double>  &contact_energies) const
   {
-    if (rigid)
-      rigid->expand(u, u_fe);
-    const Vector<double> &x = rigid ? u_fe : u;
+    const Vector<double> &x = fe_displacement(u);
     contact_energies = contact ? contact->energies(x) : std::vector<double>();
     return std::accumulate(contact_energies.begin(),
                            contact_energies.end(),

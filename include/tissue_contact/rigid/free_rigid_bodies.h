@@ -1,5 +1,7 @@
 #pragma once
 
+#include <tissue_contact/rigid/rotation.h>
+
 #include <deal.II/base/point.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
@@ -133,10 +135,10 @@ namespace TissueContact
       translation_unknowns(const unsigned int c) const;
 
     private:
-      /** d u_s / d q of every slave of body @p b at theta (one row of six
+      /** d u_s / d q of every slave of body @p b at the rotation @p rot (one row of six
        * per slave, in the order of Body::dofs). */
       std::vector<std::array<double, 6>>
-      jacobian(const unsigned int b, const Tensor<1, 3> &theta) const;
+      jacobian(const unsigned int b, const RotationDerivatives &rot) const;
 
       const types::global_dof_index n_fe;
       std::vector<Body>             bodies;

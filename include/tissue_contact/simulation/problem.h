@@ -159,6 +159,12 @@ namespace TissueContact
     Elasticity::ElasticAssembler               assembler;
     std::unique_ptr<Contact::ContactAssembler> contact;
     std::unique_ptr<Rigid::FreeRigidBodies>    rigid;
+    /** @p u itself without free rigid bodies; else u_fe set to
+     * displacement(@p u), without a copy of @p u where there is nothing
+     * to complete (the assembly's path). */
+    const Vector<double> &
+    fe_displacement(const Vector<double> &u) const;
+
     /** With free rigid bodies: the finite element displacement and residual
      * (disc.n_dofs()) of the last assemble() or energy(). */
     mutable Vector<double>            u_fe, R_fe;
