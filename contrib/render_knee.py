@@ -21,9 +21,7 @@ GLX error of the virtual display; running it again works.)
 
 import argparse
 import os
-import sys
 
-from paraview import servermanager
 from paraview.simple import (
     Clip,
     ColorBy,
@@ -31,28 +29,13 @@ from paraview.simple import (
     GetColorTransferFunction,
     GetScalarBar,
     Hide,
-    PVDReader,
     Render,
     SaveScreenshot,
     Show,
     Threshold,
-    UpdatePipeline,
-    WarpByVector,
 )
-import paraview.vtk as vtk
 
-
-class WarningCounter:
-    """Counts the messages VTK's output window receives (warnings, errors)."""
-
-    def __init__(self):
-        self.messages = []
-        window = vtk.vtkOutputWindow.GetInstance()
-        window.AddObserver("WarningEvent", self.collect)
-        window.AddObserver("ErrorEvent", self.collect)
-
-    def collect(self, obj, event):
-        self.messages.append(event)
+from pv_series import WarningCounter, nearest_step, open_series
 
 
 BODY_COLOURS = [  # material id 1..7
@@ -98,28 +81,14 @@ def main():
     os.makedirs(args.figures, exist_ok=True)
     counter = WarningCounter()
 
-    reader = PVDReader(FileName=args.pvd)
-    reader.UpdatePipelineInformation()
-    times = list(reader.TimestepValues)
-    if not times:
-        sys.exit("no time steps in " + args.pvd)
-    # every field is point data on points duplicated per cell (the
-    # material id too, constant on each cell)
-    warp = WarpByVector(Input=reader, Vectors=["POINTS", "displacement"])
-
-    view = GetActiveViewOrCreate("RenderView")
-    view.ViewSize = [900, 900]
-    if hasattr(view, "UseColorPaletteForBackground"):
-        view.UseColorPaletteForBackground = 0
-    view.Background = [1.0, 1.0, 1.0]
-    view.OrientationAxesVisibility = 0
+    times, warp, view = open_series(args.pvd, 900)
 
     # the flexion sequence
     display = Show(warp, view)
     colour_by_body(display)
     # the steps nearest to evenly spaced angles (cut-back steps are uneven)
     n = max(args.frames, 2)
-    picks = sorted({min(times, key=lambda t: abs(t - i * times[-1] / (n - 1)))
+    picks = sorted({nearest_step(times, i * times[-1] / (n - 1))
                     for i in range(n)})
     for t in picks:
         view.ViewTime = t
@@ -167,9 +136,7 @@ def main():
     SaveScreenshot(os.path.join(args.figures, "knee_cutaway.png"), view,
                    ImageResolution=[900, 900])
 
-    if counter.messages:
-        sys.exit("ParaView reported %d warning(s) or error(s)"
-                 % len(counter.messages))
+    counter.exit_on_messages()
     print("wrote %d flexion views, the skin's depth and a cut-away to %s"
           % (len(picks), args.figures))
 

@@ -11,11 +11,10 @@ ParaView reports a warning or error (under xvfb-run, ParaView 5.11 from Debian
 
 import argparse
 import os
-import sys
 
-from paraview.simple import (ColorBy, GetActiveViewOrCreate, PVDReader,
-                             Render, SaveScreenshot, Show, WarpByVector)
-import paraview.vtk as vtk
+from paraview.simple import ColorBy, Render, SaveScreenshot, Show
+
+from pv_series import WarningCounter, nearest_step, open_series
 
 
 def main():
@@ -24,27 +23,12 @@ def main():
     parser.add_argument("figures")
     args = parser.parse_args()
     os.makedirs(args.figures, exist_ok=True)
-    messages = []
-    window = vtk.vtkOutputWindow.GetInstance()
-    for event in ("WarningEvent", "ErrorEvent"):
-        window.AddObserver(event, lambda obj, e: messages.append(e))
-
-    reader = PVDReader(FileName=args.pvd)
-    reader.UpdatePipelineInformation()
-    times = list(reader.TimestepValues)
-    if not times:
-        sys.exit("no time steps in " + args.pvd)
-    warp = WarpByVector(Input=reader, Vectors=["POINTS", "displacement"])
-    view = GetActiveViewOrCreate("RenderView")
-    view.ViewSize = [800, 800]
-    if hasattr(view, "UseColorPaletteForBackground"):
-        view.UseColorPaletteForBackground = 0
-    view.Background = [1.0, 1.0, 1.0]
-    view.OrientationAxesVisibility = 0
+    counter = WarningCounter()
+    times, warp, view = open_series(args.pvd, 800)
     display = Show(warp, view)
     ColorBy(display, ("POINTS", "von_mises"))
     for fraction in (0.25, 0.5, 0.75, 1.0):
-        t = min(times, key=lambda x: abs(x - fraction * times[-1]))
+        t = nearest_step(times, fraction * times[-1])
         view.ViewTime = t
         display.RescaleTransferFunctionToDataRange(False, True)
         view.CameraPosition = [0.2, 0.1, 1.5]
@@ -56,8 +40,7 @@ def main():
         SaveScreenshot(os.path.join(args.figures, "coiling_snake_%03d.png"
                                     % round(360 * t)), view,
                        ImageResolution=[800, 800])
-    if messages:
-        sys.exit("ParaView reported %d warning(s) or error(s)" % len(messages))
+    counter.exit_on_messages()
 
 
 if __name__ == "__main__":
