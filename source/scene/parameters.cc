@@ -33,6 +33,27 @@ namespace TissueContact
                             " at load factor 1, in length units" +
                             vector_pattern_doc,
                           vector_pattern());
+        prm.declare_entry(
+          "Translation path",
+          "",
+          Patterns::List(
+            Patterns::List(Patterns::Double(), 3, 3, ","), 0, 1000, ";"),
+          "Instead of Translation: waypoints d0; d1; ...; dn of the "
+          "translation of the " +
+            what +
+            ", in length units, reached at the load factors k/n and joined "
+            "by straight segments (a zigzag path, say), each as three "
+            "numbers x, y, z, separated by ';'. Empty: the translation is "
+            "lambda d. The rotation still grows as lambda theta.");
+        prm.add_action("Translation path", [&m](const std::string &list) {
+          m.path.clear();
+          for (const auto &point : Utilities::split_string_list(list, ';'))
+            {
+              const std::vector<double> x =
+                Utilities::string_to_double(Utilities::split_string_list(point));
+              m.path.emplace_back(Tensor<1, 3>({x[0], x[1], x[2]}));
+            }
+        });
         prm.add_parameter("Rotation axis",
                           m.axis,
                           "Axis a of the rotation, any nonzero length" +
@@ -70,6 +91,12 @@ namespace TissueContact
       {
         AssertThrow(m.angle == 0. || m.axis.norm() > 0.,
                     ExcMessage("Rotation axis must not be zero"));
+        AssertThrow(m.path.empty() || m.translation.norm() == 0.,
+                    ExcMessage("set either Translation or Translation path, "
+                               "not both"));
+        AssertThrow(m.path.empty() || m.path.size() >= 2,
+                    ExcMessage("a Translation path needs at least two "
+                               "waypoints (it has one)"));
       }
     } // namespace
 
@@ -206,11 +233,12 @@ namespace TissueContact
                              "needs Model = rigid (it is " +
                              material.model + ")"));
       AssertThrow(rigid_motion.angle == 0. &&
-                    rigid_motion.translation.norm() == 0.,
+                    rigid_motion.translation.norm() == 0. &&
+                    rigid_motion.path.empty(),
                   ExcMessage("body '" + name +
                              "': a free rigid body's motion "
-                             "is unknown; set no Translation or Rotation "
-                             "angle in its Rigid motion"));
+                             "is unknown; set no Translation, Translation "
+                             "path or Rotation angle in its Rigid motion"));
     }
 
 

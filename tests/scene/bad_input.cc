@@ -121,6 +121,16 @@ main(int argc, char **argv)
   run("contact body that is no body",
       "subsection Bodies\n subsection Body 0\n  set Contact body = 5\n end\n"
       "end\n");
+  run("translation path of one waypoint",
+      "subsection Boundary conditions\n subsection Dirichlet 0\n"
+      "  set Translation path = 0, 0, 0.1\n end\nend\n");
+  run("translation and translation path",
+      "subsection Boundary conditions\n subsection Dirichlet 0\n"
+      "  set Translation = 0, 0, 0.1\n"
+      "  set Translation path = 0, 0, 0; 0, 0, 0.1\n end\nend\n");
+  run("waypoint of two numbers",
+      "subsection Boundary conditions\n subsection Dirichlet 0\n"
+      "  set Translation path = 0, 0, 0; 0, 0.1\n end\nend\n");
   run("fiber direction that is not a formula",
       "subsection Bodies\n subsection Body 0\n  subsection Fiber\n"
       "   set Enabled = true\n   set Direction = 1; 0\n  end\n end\nend\n");

@@ -3,6 +3,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <vector>
+
 namespace TissueContact
 {
   namespace Scene
@@ -23,6 +25,12 @@ namespace TissueContact
       Tensor<1, 3> axis{{0., 0., 1.}};
       Point<3>     center;
       double       angle = 0.; // radians
+      /** Waypoints of the translation; empty: @f$\lambda d@f$. */
+      std::vector<Tensor<1, 3>> path;
+
+      /** The translation at the load factor @p load_factor. */
+      Tensor<1, 3>
+      translation_at(const double load_factor) const;
 
       Tensor<1, 3>
       displacement(const Point<3> &X, const double load_factor) const;
