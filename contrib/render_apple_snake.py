@@ -56,6 +56,7 @@ def main():
         for name, whole in (("", True), ("_inside", False)):
             (Show if whole else Hide)(snake_cells, view)
             (Hide if whole else Show)(half, view)
+            Render(view)  # before the camera: Show() may reset it
             view.CameraPosition = [0.3, 0.0, 1.5]
             view.CameraFocalPoint = [0.3, 0.0, 0.0]
             view.CameraViewUp = [0.0, 1.0, 0.0]

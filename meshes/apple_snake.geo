@@ -12,8 +12,8 @@
 // 4 the outer skin, 5 the apple's surface (contact surface).
 //
 // Mesh size: h away from the lumen, h_in on the lumen, h_apple in the
-// apple (defaults h 0.02, h_in 0.008, h_apple = h_in: about 5 000
-// tetrahedra; the suite's h 0.025, h_in 0.011: about 3 000).
+// apple (defaults h 0.02, h_in 0.008, h_apple = h_in: 6 230
+// tetrahedra; the suite's h 0.025, h_in 0.011: 3 239).
 SetFactory("OpenCASCADE");
 If (!Exists(h))
   h = 0.02;
