@@ -11,6 +11,7 @@ namespace TissueContact
     , fe(FE_SimplexP<3>(degree), 3)
     , mapping(FE_SimplexP<3>(1))
     , quadrature(degree + 1)
+    , stiffness_quadrature(degree == 1 ? 1 : degree + 1)
     , face_quadrature(degree + 1)
     , dof_handler(triangulation)
   {
@@ -46,5 +47,37 @@ namespace TissueContact
           component[dofs[k]] = fe.system_to_component_index(k).first;
       }
     return component;
+  }
+
+
+  Point<3>
+  Discretization::mean_support_point() const
+  {
+    Point<3> mean;
+    for (const auto &x : support_points())
+      mean += x / static_cast<double>(n_dofs());
+    return mean;
+  }
+
+
+  std::vector<Vector<double>>
+  Discretization::rigid_body_modes() const
+  {
+    const std::vector<Point<3>>     X    = support_points();
+    const std::vector<unsigned int> c    = dof_components();
+    const Point<3>                  mean = mean_support_point();
+    std::vector<Vector<double>>     modes(6, Vector<double>(n_dofs()));
+    for (types::global_dof_index i = 0; i < n_dofs(); ++i)
+      {
+        modes[c[i]][i]       = 1.;
+        const Tensor<1, 3> r = X[i] - mean;
+        for (unsigned int a = 0; a < 3; ++a)
+          {
+            Tensor<1, 3> e;
+            e[a]            = 1.;
+            modes[3 + a][i] = cross_product_3d(e, r)[c[i]];
+          }
+      }
+    return modes;
   }
 } // namespace TissueContact

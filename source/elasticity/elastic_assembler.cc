@@ -46,7 +46,7 @@ namespace TissueContact
       : disc(disc)
       , bodies(bodies)
       , f_ext(disc.n_dofs())
-      , n_q(disc.quadrature.size())
+      , n_q(disc.stiffness_quadrature.size())
       , n_nodes(disc.fe.base_element(0).n_dofs_per_cell())
       , n_local(disc.fe.n_dofs_per_cell())
     {
@@ -72,7 +72,7 @@ namespace TissueContact
 
       FEValues<3>                          fe_values(disc.mapping,
                             disc.fe,
-                            disc.quadrature,
+                            disc.stiffness_quadrature,
                             update_values | update_gradients |
                               update_JxW_values | update_quadrature_points);
       FEFaceValues<3>                      fe_face_values(disc.mapping,

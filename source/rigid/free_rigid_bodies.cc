@@ -241,15 +241,5 @@ namespace TissueContact
         }
       return D;
     }
-
-
-    std::vector<types::global_dof_index>
-    FreeRigidBodies::translation_unknowns(const unsigned int c) const
-    {
-      std::vector<types::global_dof_index> result;
-      for (unsigned int b = 0; b < bodies.size(); ++b)
-        result.push_back(first_unknown(b) + c);
-      return result;
-    }
   } // namespace Rigid
 } // namespace TissueContact

@@ -204,23 +204,42 @@ namespace TissueContact
   }
 
 
-  std::vector<std::vector<bool>>
-  Problem::constant_modes() const
+  std::vector<Vector<double>>
+  Problem::near_null_space() const
   {
-    std::vector<std::vector<bool>> modes;
-    DoFTools::extract_constant_modes(disc.dof_handler,
-                                     ComponentMask(3, true),
-                                     modes);
-    if (rigid)
-      for (unsigned int c = 0; c < 3; ++c)
-        {
-          for (types::global_dof_index i = 0; i < disc.n_dofs(); ++i)
-            if (rigid->is_slave(i))
-              modes[c][i] = false;
-          modes[c].resize(n_dofs(), false);
-          for (const auto q : rigid->translation_unknowns(c))
-            modes[c][q] = true;
-        }
+    std::vector<Vector<double>> modes = disc.rigid_body_modes();
+    if (!rigid)
+      return modes;
+    // the rotations' axes pass through the mean support point
+    const Point<3> mean = disc.mean_support_point();
+    for (unsigned int k = 0; k < 6; ++k)
+      {
+        Vector<double> &v = modes[k];
+        for (types::global_dof_index i = 0; i < disc.n_dofs(); ++i)
+          if (rigid->is_slave(i))
+            v[i] = 0.;
+        Vector<double> full(n_dofs());
+        for (types::global_dof_index i = 0; i < disc.n_dofs(); ++i)
+          full[i] = v[i];
+        for (unsigned int b = 0; b < rigid->n_bodies(); ++b)
+          {
+            const auto   q = rigid->first_unknown(b);
+            Tensor<1, 3> t, theta;
+            if (k < 3)
+              t[k] = 1.;
+            else
+              {
+                theta[k - 3] = 1.;
+                t            = cross_product_3d(theta, rigid->center(b) - mean);
+              }
+            for (unsigned int j = 0; j < 3; ++j)
+              {
+                full[q + j]     = t[j];
+                full[q + 3 + j] = theta[j];
+              }
+          }
+        v = full;
+      }
     return modes;
   }
 } // namespace TissueContact

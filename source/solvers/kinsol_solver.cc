@@ -114,7 +114,7 @@ namespace TissueContact
       SUNDIALS::KINSOL<Vector<double>> kinsol(data);
 
       SparseMatrix<double> J;
-      const LinearSolver   linear(linear_solver, problem.constant_modes());
+      const LinearSolver   linear(linear_solver, problem.near_null_space());
       std::string          failure;
 
       kinsol.reinit_vector = [n](Vector<double> &v) { v.reinit(n); };

@@ -163,7 +163,7 @@ namespace TissueContact
       };
 
       const LinearSolver linear_solver(parameters.linear_solver,
-                                       problem.constant_modes());
+                                       problem.near_null_space());
       Vector<double>     R(n), R_trial(n), du(n), rhs(n), u_trial(n);
       const double       f_ext   = problem.external_force_norm(load_factor);
       double             r_first = 0.;
@@ -238,6 +238,21 @@ namespace TissueContact
             rhs = R;
             rhs *= -1.;
             du = 0.;
+            // a prescribed row keeps its assembled diagonal in
+            // apply_boundary_values(); a node that only a contact pair
+            // touches (a rigid body's) can bring one of 1e-47, a pivot a
+            // factorization rightly calls zero: such a row gets the mean
+            // diagonal of the free rows instead (the others keep theirs)
+            double diagonal = 0.;
+            for (types::global_dof_index i = 0; i < n; ++i)
+              if (!prescribed[i])
+                diagonal += std::abs(K.diag_element(i));
+            diagonal = n > gap.size() ? diagonal / (n - gap.size()) : 0.;
+            if (!(diagonal > 0.))
+              diagonal = 1.;
+            for (const auto &g : gap)
+              if (std::abs(K.diag_element(g.first)) < 1e-12 * diagonal)
+                K.diag_element(g.first) = diagonal;
             MatrixTools::apply_boundary_values(gap, K, du, rhs, true);
             info.linear_iterations = linear_solver.solve(K, du, rhs);
           }

@@ -159,22 +159,26 @@ main(int argc, char **argv)
       for (types::global_dof_index i = 0; i < disc.n_dofs(); ++i)
         if (X[i][2] < 1e-12)
           clamp[i] = 0.;
+      // "GMRES+AMG6": AMG with the six rigid-body modes (AMG rotations)
       for (const auto &[type, tolerance] :
            std::vector<std::pair<std::string, double>>{{"direct", 0.},
+                                                       {"MUMPS", 0.},
                                                        {"GMRES+Jacobi", 0.1},
                                                        {"GMRES+AMG", 0.1},
+                                                       {"GMRES+AMG6", 0.1},
                                                        {"GMRES+Jacobi", 1e-8},
-                                                       {"GMRES+AMG", 1e-8}})
+                                                       {"GMRES+AMG", 1e-8},
+                                                       {"GMRES+AMG6", 1e-8}})
         {
           Solvers::LinearSolver::Parameters p;
-          p.type               = type;
+          p.type               = type == "MUMPS"      ? "direct" :
+                                 type == "GMRES+AMG6" ? "GMRES+AMG" :
+                                                        type;
+          p.direct_solver      = type == "MUMPS" ? "MUMPS" : "UMFPACK";
+          p.amg_rotations      = type == "GMRES+AMG6";
           p.relative_tolerance = tolerance;
           p.max_iterations     = 5000;
-          std::vector<std::vector<bool>> modes;
-          DoFTools::extract_constant_modes(disc.dof_handler,
-                                           ComponentMask(3, true),
-                                           modes);
-          const Solvers::LinearSolver solver(p, modes);
+          const Solvers::LinearSolver solver(p, disc.rigid_body_modes());
           Vector<double> u(disc.n_dofs()), R(disc.n_dofs()), du(disc.n_dofs());
           SparseMatrix<double> K(disc.sparsity_pattern);
           Timer                timer;

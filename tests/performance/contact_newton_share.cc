@@ -96,7 +96,7 @@ main(int argc, char **argv)
           lp.type               = s == 0 ? "direct" : "GMRES+AMG";
           lp.relative_tolerance = 1e-8;
           const Solvers::LinearSolver solver(lp,
-                                             sim.problem().constant_modes());
+                                             sim.problem().near_null_space());
           du = 0.;
           timer.restart();
           solver.solve(K, du, rhs);

@@ -7,6 +7,7 @@
 #include <deal.II/fe/mapping_fe.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
 
 namespace TissueContact
 {
@@ -16,8 +17,12 @@ namespace TissueContact
    * The finite element space of the displacement: vector-valued
    * @f$P_p@f$ tetrahedra, @c FESystem<3>(FE_SimplexP<3>(p), 3) with
    * @f$p\in\{1,2\}@f$, the affine simplex mapping, Gauss quadratures exact
-   * for the mass matrix (@f$2p@f$) in cells and faces, the DoF handler and
-   * the sparsity pattern of the stiffness matrix.
+   * for the mass matrix (@f$2p@f$) in cells and faces, the quadrature of the
+   * strain energy, its residual and tangent (P1: one point at the centroid,
+   * exact, since F is constant in a linear tetrahedron and so is every
+   * integrand, the dead body force's N too being integrated exactly; P2:
+   * the same rule as the mass matrix), the DoF handler and the sparsity
+   * pattern of the stiffness matrix.
    */
   class Discretization
   {
@@ -31,6 +36,7 @@ namespace TissueContact
     const FESystem<3>      fe;
     const MappingFE<3>     mapping;
     const QGaussSimplex<3> quadrature;
+    const QGaussSimplex<3> stiffness_quadrature;
     const QGaussSimplex<2> face_quadrature;
     DoFHandler<3>          dof_handler;
     SparsityPattern        sparsity_pattern;
@@ -49,5 +55,19 @@ namespace TissueContact
     /** The displacement component (0, 1, 2) of every DoF. */
     std::vector<unsigned int>
     dof_components() const;
+
+    /** The mean @f$\bar X@f$ of the support points of all DoFs. */
+    Point<3>
+    mean_support_point() const;
+
+    /**
+     * The six rigid-body modes of the displacement field, the near-null
+     * space of elasticity: the translations @f$e_c@f$ (c = 0, 1, 2), then
+     * the infinitesimal rotations @f$e_a \times (X - \bar X)@f$ about the
+     * axes through the mean support point @f$\bar X@f$ (a = 0, 1, 2), as
+     * values at every DoF (n_dofs() entries each).
+     */
+    std::vector<Vector<double>>
+    rigid_body_modes() const;
   };
 } // namespace TissueContact

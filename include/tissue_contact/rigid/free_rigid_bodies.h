@@ -129,10 +129,6 @@ namespace TissueContact
       Vector<double>
       condense_diagonal(const Vector<double> &D_fe) const;
 
-      /** The body unknowns of translation component @p c, for the AMG's
-       * near-null space. */
-      std::vector<types::global_dof_index>
-      translation_unknowns(const unsigned int c) const;
 
     private:
       /** d u_s / d q of every slave of body @p b at the rotation @p rot (one row of six

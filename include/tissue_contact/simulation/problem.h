@@ -130,11 +130,12 @@ namespace TissueContact
     external_force_norm(const double load_factor) const override;
     Vector<double>
     quasi_viscosity_diagonal(const double eta) const override;
-    /** The three rigid translations (one mask per displacement
-     * component, with the free rigid bodies' translations), AMG's
-     * near-null space. */
-    std::vector<std::vector<bool>>
-    constant_modes() const override;
+    /** The six rigid-body modes (Discretization::rigid_body_modes()),
+     * zero on the free rigid bodies' slaves and, on their unknowns, the
+     * same motion: the centre's translation and the rotation vector.
+     * AMG's near-null space. */
+    std::vector<Vector<double>>
+    near_null_space() const override;
     /** Elastic potential (with the loads' work) plus contact energy. */
     double
     energy(const Vector<double> &u, const double load_factor) const override;

@@ -82,13 +82,12 @@ namespace TissueContact
       /**
        * The near-null space handed to the algebraic multigrid
        * preconditioner (LinearSolver with Type = GMRES+AMG, Trilinos ML's
-       * "constant modes"): one mask per displacement component c with
-       * entry i true where DoF i is the c-component of a node, i.e. the
-       * three rigid translations. Empty (the default): AMG uses one
-       * constant mode over all DoFs. Rotations are not included.
+       * pre-computed null space): the six rigid-body modes, three
+       * translations and three rotations, as values at every unknown.
+       * Empty (the default): AMG uses one constant mode over all DoFs.
        */
-      virtual std::vector<std::vector<bool>>
-      constant_modes() const
+      virtual std::vector<Vector<double>>
+      near_null_space() const
       {
         return {};
       }
@@ -149,10 +148,10 @@ namespace TissueContact
       {
         return inner.energy(u, load_factor);
       }
-      std::vector<std::vector<bool>>
-      constant_modes() const override
+      std::vector<Vector<double>>
+      near_null_space() const override
       {
-        return inner.constant_modes();
+        return inner.near_null_space();
       }
 
     protected:
