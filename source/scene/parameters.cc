@@ -49,8 +49,8 @@ namespace TissueContact
           m.path.clear();
           for (const auto &point : Utilities::split_string_list(list, ';'))
             {
-              const std::vector<double> x =
-                Utilities::string_to_double(Utilities::split_string_list(point));
+              const std::vector<double> x = Utilities::string_to_double(
+                Utilities::split_string_list(point));
               m.path.emplace_back(Tensor<1, 3>({x[0], x[1], x[2]}));
             }
         });

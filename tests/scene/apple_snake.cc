@@ -47,7 +47,7 @@ main(int argc, char **argv)
 
   // the snake's width (extent in y of its deformed nodes) where the apple's
   // centre ends, x = 0.435
-  const double x_end = 0.435, R = 0.045;
+  const double         x_end = 0.435, R = 0.045;
   const Vector<double> v     = problem.displacement(u);
   double               y_min = 1., y_max = -1.;
   for (const auto &cell :
