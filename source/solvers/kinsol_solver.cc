@@ -114,7 +114,10 @@ namespace TissueContact
       SUNDIALS::KINSOL<Vector<double>> kinsol(data);
 
       SparseMatrix<double> J;
-      const LinearSolver   linear(linear_solver, problem.near_null_space());
+      const LinearSolver   linear(linear_solver,
+                                linear_solver.uses_near_null_space() ?
+                                    problem.near_null_space() :
+                                    std::vector<Vector<double>>());
       std::string          failure;
 
       kinsol.reinit_vector = [n](Vector<double> &v) { v.reinit(n); };

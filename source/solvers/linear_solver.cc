@@ -29,7 +29,7 @@ namespace TissueContact
         direct_solver,
         "For Type = direct: UMFPACK (deal.II's SparseDirectUMFPACK) or MUMPS "
         "(the multifrontal solver through Trilinos Amesos: the same solution "
-        "to rounding, 1.3-1.9 times faster on the meshes measured in "
+        "to rounding, 1.1-1.9 times faster on the meshes measured in "
         "doc/theory/04-solver.md sec. 4.5; a tangent it cannot factorize "
         "cuts the increment back).",
         Patterns::Selection("UMFPACK|MUMPS"));

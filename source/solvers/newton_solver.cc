@@ -162,11 +162,14 @@ namespace TissueContact
                  std::unique_ptr<TimerOutput::Scope>();
       };
 
-      const LinearSolver linear_solver(parameters.linear_solver,
-                                       problem.near_null_space());
-      Vector<double>     R(n), R_trial(n), du(n), rhs(n), u_trial(n);
-      const double       f_ext   = problem.external_force_norm(load_factor);
-      double             r_first = 0.;
+      const LinearSolver linear_solver(
+        parameters.linear_solver,
+        parameters.linear_solver.uses_near_null_space() ?
+          problem.near_null_space() :
+          std::vector<Vector<double>>());
+      Vector<double> R(n), R_trial(n), du(n), rhs(n), u_trial(n);
+      const double   f_ext   = problem.external_force_norm(load_factor);
+      double         r_first = 0.;
 
       for (unsigned int it = 0;; ++it)
         {

@@ -8,10 +8,7 @@
 // apple presses the lumen) and the snake's width around the apple at the
 // end against its undeformed width (the snake widens).
 
-#include "../tests.h"
-
-#include <tissue_contact/base/exceptions.h>
-#include <tissue_contact/simulation/static_simulation.h>
+#include "scenes.h"
 
 using namespace dealii;
 using namespace TissueContact;
@@ -30,15 +27,8 @@ main(int argc, char **argv)
   std::ostringstream log;
   StaticSimulation   sim(Scene::SceneParameters::from_string(prm), log);
   SolveStatistics    statistics;
-  try
-    {
-      statistics = sim.solve_quietly();
-    }
-  catch (const std::exception &e)
-    {
-      deallog << "the apple stopped: " << error_message(e) << std::endl;
-      return 0;
-    }
+  if (!SceneTests::solve_or_log(sim, statistics, "the apple"))
+    return 0;
   const Problem      &problem = sim.problem();
   const auto         &u       = sim.solution();
   std::vector<double> contact_energy;

@@ -6,10 +6,7 @@
 // 0.1) and the self-contact energy at the end (positive: the snake rests on
 // itself).
 
-#include "../tests.h"
-
-#include <tissue_contact/base/exceptions.h>
-#include <tissue_contact/simulation/static_simulation.h>
+#include "scenes.h"
 
 using namespace dealii;
 using namespace TissueContact;
@@ -24,15 +21,8 @@ main(int argc, char **argv)
   StaticSimulation   sim(
     Scene::SceneParameters::from_string(project_prm("coiling_snake.prm")), log);
   SolveStatistics statistics;
-  try
-    {
-      statistics = sim.solve_quietly();
-    }
-  catch (const std::exception &e)
-    {
-      deallog << "the coiling stopped: " << error_message(e) << std::endl;
-      return 0;
-    }
+  if (!SceneTests::solve_or_log(sim, statistics, "the coiling"))
+    return 0;
   const Problem      &problem = sim.problem();
   const auto         &u       = sim.solution();
   std::vector<double> contact_energy;

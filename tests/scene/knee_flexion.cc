@@ -8,10 +8,7 @@
 // 10 %), and the patella's motion: it must travel down and around the
 // condyles (its center moves backwards and down, it turns with the tibia).
 
-#include "../tests.h"
-
-#include <tissue_contact/base/exceptions.h>
-#include <tissue_contact/simulation/static_simulation.h>
+#include "scenes.h"
 
 using namespace dealii;
 using namespace TissueContact;
@@ -32,15 +29,8 @@ main(int argc, char **argv)
   std::ostringstream log;
   StaticSimulation   sim(Scene::SceneParameters::from_string(prm), log);
   SolveStatistics    statistics;
-  try
-    {
-      statistics = sim.solve_quietly();
-    }
-  catch (const std::exception &e)
-    {
-      deallog << "the flexion stopped: " << error_message(e) << std::endl;
-      return 0;
-    }
+  if (!SceneTests::solve_or_log(sim, statistics, "the flexion"))
+    return 0;
   const Problem     &problem     = sim.problem();
   const auto        &u           = sim.solution();
   const auto        &rigid       = *problem.free_rigid_bodies();

@@ -40,6 +40,14 @@ namespace TissueContact
         unsigned int max_iterations     = 1000;
         bool         amg_rotations      = false;
 
+        /** Whether the solver uses a near-null space (GMRES+AMG): the
+         * others need none, so none is computed for them. */
+        bool
+        uses_near_null_space() const
+        {
+          return type == "GMRES+AMG";
+        }
+
         /** Enter "Linear solver" and bind its entries to this object. */
         void
         declare_parameters(ParameterHandler &prm);
