@@ -1,3 +1,4 @@
+#include <tissue_contact/base/timing.h>
 #include <tissue_contact/contact/body_contact_assembler.h>
 #include <tissue_contact/contact/contact_parameters.h>
 #include <tissue_contact/contact/material_depth.h>
@@ -68,6 +69,62 @@ namespace TissueContact
         size += b.get_boundary_points().first.distance(
           b.get_boundary_points().second);
       rebuild_distance = boxes.empty() ? 0. : size / boxes.size();
+      candidate_margin = 0.1 * rebuild_distance;
+      for (unsigned int t = 0; t < surface.triangles.size(); ++t)
+        if (surface_of_a_pair(t))
+          surface_triangles.push_back(t);
+    }
+
+
+    void
+    BodyContactAssembler::update_candidates(
+      const std::vector<Point<3>> &x) const
+    {
+      if (have_candidates)
+        {
+          double moved = 0.;
+          for (unsigned int v = 0; v < x.size(); ++v)
+            moved = std::max(moved, x[v].distance_square(x_at_candidates[v]));
+          if (std::sqrt(moved) <= 0.5 * candidate_margin)
+            return;
+        }
+      const auto scope = time_section(timer, "contact: search");
+      refit(x);
+      // the triangles' searches in parallel (the tree is only read), the
+      // lists appended in the triangles' order
+      candidates.clear();
+      offsets.assign(1, 0);
+      struct Scratch
+      {};
+      WorkStream::run(
+        surface_triangles.cbegin(),
+        surface_triangles.cend(),
+        [&](const std::vector<unsigned int>::const_iterator &it,
+            Scratch &,
+            std::vector<Candidate> &found) {
+          found.clear();
+          for_each_candidate_of(
+            *it,
+            x,
+            candidate_margin,
+            [&](const unsigned int t,
+                const unsigned int k,
+                const BodyContact &p) {
+              found.push_back(
+                {t, k, static_cast<unsigned int>(&p - pairs.data())});
+            });
+        },
+        [&](const std::vector<Candidate> &found) {
+          candidates.insert(candidates.end(), found.begin(), found.end());
+          offsets.push_back(candidates.size());
+        },
+        Scratch(),
+        std::vector<Candidate>(),
+        MultithreadInfo::n_threads(),
+        8);
+      x_at_candidates = x;
+      have_candidates = true;
+      ++n_candidate_searches;
     }
 
 
@@ -161,6 +218,46 @@ namespace TissueContact
     }
 
 
+    bool
+    BodyContactAssembler::rejected(const unsigned int  t,
+                                   const unsigned int  k,
+                                   const PairGeometry &geometry) const
+    {
+      const auto &[tet, tri, g] = geometry;
+      if (*std::max_element(g.begin(), g.end()) <= 0.)
+        return true;
+      // barycentric coordinates of the triangle's vertices
+      const Tensor<1, 3> e1 = tet[1] - tet[0], e2 = tet[2] - tet[0],
+                         e3   = tet[3] - tet[0];
+      const Tensor<1, 3> n1   = cross_product_3d(e2, e3),
+                         n2   = cross_product_3d(e3, e1),
+                         n3   = cross_product_3d(e1, e2);
+      const double six_volume = e1 * n1;
+      if (!(std::abs(six_volume) > 0.) || !std::isfinite(six_volume))
+        return false; // leave a degenerate tetrahedron to the clipping
+      const auto &kv = tets[k];
+      const auto &tv = surface.triangles[t];
+      // a face i separates if every vertex is outside it or a vertex of the
+      // tetrahedron other than i (on the face)
+      std::array<bool, 4> separates{{true, true, true, true}};
+      for (unsigned int a = 0; a < 3; ++a)
+        {
+          const auto shared =
+            std::find(kv.begin(), kv.end(), tv[a]) - kv.begin();
+          const Tensor<1, 3>    r = tri[a] - tet[0];
+          std::array<double, 4> lambda;
+          lambda[1] = (r * n1) / six_volume;
+          lambda[2] = (r * n2) / six_volume;
+          lambda[3] = (r * n3) / six_volume;
+          lambda[0] = 1. - lambda[1] - lambda[2] - lambda[3];
+          for (unsigned int i = 0; i < 4; ++i)
+            separates[i] =
+              separates[i] && (shared < 4 ? shared != i : lambda[i] < -1e-6);
+        }
+      return separates[0] || separates[1] || separates[2] || separates[3];
+    }
+
+
     std::array<types::global_dof_index, 21>
     BodyContactAssembler::pair_dofs(const unsigned int t,
                                     const unsigned int k) const
@@ -231,14 +328,11 @@ namespace TissueContact
       if (pairs.empty())
         return;
       const std::vector<Point<3>> x = surface.positions(u);
-      refit(x);
+      update_candidates(x);
+      const auto scope = time_section(timer, "contact: kernels");
       // the pairs of each contact triangle are evaluated in parallel (the
-      // tree is only read); f sees them serially, in the order of a serial
+      // list is only read); f sees them serially, in the order of a serial
       // loop, so sums are reproducible
-      std::vector<unsigned int> surface_triangles;
-      for (unsigned int t = 0; t < surface.triangles.size(); ++t)
-        if (surface_of_a_pair(t))
-          surface_triangles.push_back(t);
       struct Result
       {
         unsigned int t = 0, k = 0;
@@ -258,18 +352,17 @@ namespace TissueContact
             Scratch &,
             Copy &c) {
           c.n = 0;
-          for_each_candidate_of(
-            *it,
-            x,
-            0.,
+          for_each_listed_candidate_of(
+            it - surface_triangles.cbegin(),
             [&](const unsigned int t,
                 const unsigned int k,
                 const BodyContact &p) {
-              const auto [tet, tri, g] = pair_geometry(x, t, k);
-              // cheap rejection before differentiating: zero energy has
-              // zero gradient (the energy is nonnegative)
-              if (*std::max_element(g.begin(), g.end()) <= 0.)
+              const PairGeometry geometry = pair_geometry(x, t, k);
+              // cheap rejection before differentiating: zero energy near
+              // this position has zero gradient and Hessian
+              if (rejected(t, k, geometry))
                 return;
+              const auto &[tet, tri, g] = geometry;
               if (c.results.size() == c.n)
                 c.results.emplace_back();
               Result    &r = c.results[c.n];
@@ -284,6 +377,8 @@ namespace TissueContact
             });
         },
         [&](const Copy &c) {
+          const auto scope =
+            time_section(c.n > 0 ? timer : nullptr, "contact: insertion");
           for (unsigned int i = 0; i < c.n; ++i)
             f(c.results[i].t, c.results[i].k, c.results[i].d);
         },
@@ -323,28 +418,50 @@ namespace TissueContact
       if (pairs.empty())
         return true;
       const std::vector<Point<3>> x = surface.positions(u);
-      refit(x);
+      update_candidates(x);
+      const auto scope = time_section(timer, "contact: sparsity check");
       // only pairs the assembly will add (nonzero energy) need couplings;
       // add_couplings() adds whole 3 x 3 vertex blocks, so one entry per
-      // vertex pair tells
+      // vertex pair tells. The triangles in parallel.
       bool all = true;
-      for_each_candidate(
-        x,
-        0.,
-        [&](const unsigned int t, const unsigned int k, const BodyContact &p) {
-          if (!all)
-            return;
-          const auto [tet, tri, g] = pair_geometry(x, t, k);
-          if (*std::max_element(g.begin(), g.end()) <= 0.)
-            return;
-          const bool active = method_of(p).energy(tet, tri, g, p.penalty) > 0.;
-          if (!active)
-            return;
-          const auto dofs = pair_dofs(t, k);
-          for (unsigned int a = 0; a < 7 && all; ++a)
-            for (unsigned int b = 0; b < 7; ++b)
-              all = all && pattern.exists(dofs[3 * a], dofs[3 * b]);
-        });
+      struct Scratch
+      {};
+      struct Has
+      {
+        bool all = true;
+      };
+      WorkStream::run(
+        surface_triangles.cbegin(),
+        surface_triangles.cend(),
+        [&](const std::vector<unsigned int>::const_iterator &it,
+            Scratch &,
+            Has &c) {
+          bool &has = c.all;
+          has       = true;
+          for_each_listed_candidate_of(
+            it - surface_triangles.cbegin(),
+            [&](const unsigned int t,
+                const unsigned int k,
+                const BodyContact &p) {
+              if (!has)
+                return;
+              const PairGeometry geometry = pair_geometry(x, t, k);
+              if (rejected(t, k, geometry))
+                return;
+              const auto &[tet, tri, g] = geometry;
+              if (!(method_of(p).energy(tet, tri, g, p.penalty) > 0.))
+                return;
+              const auto dofs = pair_dofs(t, k);
+              for (unsigned int a = 0; a < 7 && has; ++a)
+                for (unsigned int b = 0; b < 7; ++b)
+                  has = has && pattern.exists(dofs[3 * a], dofs[3 * b]);
+            });
+        },
+        [&](const Has &c) { all = all && c.all; },
+        Scratch(),
+        Has(),
+        MultithreadInfo::n_threads(),
+        8);
       return all;
     }
 
@@ -384,33 +501,35 @@ namespace TissueContact
       if (pairs.empty())
         return {};
       const std::vector<Point<3>> x = surface.positions(u);
-      refit(x);
+      update_candidates(x);
       std::map<unsigned int, double> depth_of;
       for (const auto &p : pairs)
         for (unsigned int t = 0; t < surface.triangles.size(); ++t)
           if (surface.triangle_body[t] == p.surface_body)
             for (const unsigned int v : surface.triangles[t])
               depth_of.emplace(v, 0.);
-      for_each_candidate(
-        x,
-        0.,
-        [&](const unsigned int t, const unsigned int k, const BodyContact &p) {
-          const std::array<Point<3>, 4> tet = {
-            {x[tets[k][0]], x[tets[k][1]], x[tets[k][2]], x[tets[k][3]]}};
-          for (const unsigned int v : surface.triangles[t])
-            {
-              const std::array<Point<3>, 3> point   = {{x[v], x[v], x[v]}};
-              const auto                    polygon = intersect(tet, point);
-              if (polygon.n_vertices == 0)
-                continue;
-              double g = 0.;
-              for (unsigned int j = 0; j < 4; ++j)
-                g += polygon.vertex[0].lambda[j] * depth[tets[k][j]];
-              depth_of[v]      = std::max(depth_of[v], g);
-              double &pair_max = per_pair[&p - pairs.data()];
-              pair_max         = std::max(pair_max, g);
-            }
-        });
+      for (unsigned int i = 0; i < surface_triangles.size(); ++i)
+        for_each_listed_candidate_of(
+          i,
+          [&](const unsigned int t,
+              const unsigned int k,
+              const BodyContact &p) {
+            const std::array<Point<3>, 4> tet = {
+              {x[tets[k][0]], x[tets[k][1]], x[tets[k][2]], x[tets[k][3]]}};
+            for (const unsigned int v : surface.triangles[t])
+              {
+                const std::array<Point<3>, 3> point   = {{x[v], x[v], x[v]}};
+                const auto                    polygon = intersect(tet, point);
+                if (polygon.n_vertices == 0)
+                  continue;
+                double g = 0.;
+                for (unsigned int j = 0; j < 4; ++j)
+                  g += polygon.vertex[0].lambda[j] * depth[tets[k][j]];
+                depth_of[v]      = std::max(depth_of[v], g);
+                double &pair_max = per_pair[&p - pairs.data()];
+                pair_max         = std::max(pair_max, g);
+              }
+          });
       return {depth_of.begin(), depth_of.end()};
     }
 
@@ -422,14 +541,41 @@ namespace TissueContact
       if (pairs.empty())
         return W;
       const std::vector<Point<3>> x = surface.positions(u);
-      refit(x);
-      for_each_candidate(
-        x,
-        0.,
-        [&](const unsigned int t, const unsigned int k, const BodyContact &p) {
-          const auto [tet, tri, g] = pair_geometry(x, t, k);
-          W[&p - pairs.data()] += method_of(p).energy(tet, tri, g, p.penalty);
-        });
+      update_candidates(x);
+      const auto scope = time_section(timer, "contact: energy");
+      // each triangle's pair energies in parallel, added serially in the
+      // list's order (the sums are those of a serial loop)
+      struct Scratch
+      {};
+      using Energies = std::vector<std::pair<unsigned int, double>>;
+      WorkStream::run(
+        surface_triangles.cbegin(),
+        surface_triangles.cend(),
+        [&](const std::vector<unsigned int>::const_iterator &it,
+            Scratch &,
+            Energies &e) {
+          e.clear();
+          for_each_listed_candidate_of(
+            it - surface_triangles.cbegin(),
+            [&](const unsigned int t,
+                const unsigned int k,
+                const BodyContact &p) {
+              const PairGeometry geometry = pair_geometry(x, t, k);
+              if (rejected(t, k, geometry))
+                return; // zero energy
+              const auto &[tet, tri, g] = geometry;
+              e.emplace_back(&p - pairs.data(),
+                             method_of(p).energy(tet, tri, g, p.penalty));
+            });
+        },
+        [&](const Energies &e) {
+          for (const auto &[p, w] : e)
+            W[p] += w;
+        },
+        Scratch(),
+        Energies(),
+        MultithreadInfo::n_threads(),
+        8);
       return W;
     }
   } // namespace Contact

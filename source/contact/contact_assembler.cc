@@ -131,5 +131,14 @@ namespace TissueContact
     {
       return obstacles ? obstacles->max_penetration(u) : 0.;
     }
+
+
+    void
+    ContactAssembler::set_timer(TimerOutput *timer)
+    {
+      this->timer = timer;
+      if (bodies)
+        bodies->set_timer(timer);
+    }
   } // namespace Contact
 } // namespace TissueContact

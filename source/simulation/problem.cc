@@ -1,4 +1,5 @@
 #include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/base/timing.h>
 #include <tissue_contact/simulation/problem.h>
 
 #include <deal.II/dofs/dof_tools.h>
@@ -144,11 +145,7 @@ namespace TissueContact
       return false;
     if (contact)
       {
-        std::unique_ptr<TimerOutput::Scope> scope;
-        if (timer != nullptr)
-          scope =
-            std::make_unique<TimerOutput::Scope>(*timer,
-                                                 "assembly: contact part");
+        const auto scope = time_section(timer, "assembly: contact part");
         contact->assemble(x, r, K);
       }
     if (rigid)

@@ -37,6 +37,7 @@ namespace TissueContact
     const auto &disc      = nonlinear_problem.discretization();
     const auto &assembler = nonlinear_problem.elastic_assembler();
     const auto *contact   = nonlinear_problem.contact_assembler();
+    Timer       total;
     TimerOutput timer(out,
                       p.output.print_timing ? TimerOutput::summary :
                                               TimerOutput::never,
@@ -157,6 +158,8 @@ namespace TissueContact
             << " degrees\n";
     if (p.output.write_vtu)
       out << "  results: " << vtu.pvd_file() << " (open in ParaView)\n";
+    times          = timer.get_summary_data(TimerOutput::total_wall_time);
+    times["total"] = total.wall_time();
     return statistics;
   }
 } // namespace TissueContact

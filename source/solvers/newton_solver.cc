@@ -1,5 +1,6 @@
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/base/parameter_tools.h>
+#include <tissue_contact/base/timing.h>
 #include <tissue_contact/solvers/newton_solver.h>
 
 #include <deal.II/numerics/matrix_tools.h>
@@ -157,9 +158,7 @@ namespace TissueContact
         return std::make_pair(std::sqrt(free), std::sqrt(reaction));
       };
       const auto section = [&](const char *name) {
-        return timer != nullptr ?
-                 std::make_unique<TimerOutput::Scope>(*timer, name) :
-                 std::unique_ptr<TimerOutput::Scope>();
+        return time_section(timer, name);
       };
 
       const LinearSolver linear_solver(
@@ -267,7 +266,8 @@ namespace TissueContact
           double E0 = std::numeric_limits<double>::quiet_NaN(), slope = 0.;
           if (parameters.energy_line_search && gap_norm == 0.)
             {
-              E0 = problem.energy(u, load_factor);
+              const auto scope = section("assembly");
+              E0               = problem.energy(u, load_factor);
               for (types::global_dof_index i = 0; i < n; ++i)
                 if (!prescribed[i])
                   slope += R[i] * du[i];

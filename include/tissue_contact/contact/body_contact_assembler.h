@@ -24,12 +24,20 @@ namespace TissueContact
      * (doc/theory/05-contact.md, secs. 1-5 and 7): for every declared pair,
      * the contact triangles of the surface body against the tetrahedra of
      * the volume body, found by a bounding-volume tree over the tetrahedra
-     * (refitted every call, rebuilt after large motion); each intersecting
+     * (refitted, rebuilt after large motion); each intersecting
      * (triangle, tetrahedron) pair adds the penalty
      * @f$\frac{\varepsilon_p}{2}\int g_h^2\,da@f$ with its exact gradient
      * and Hessian (penalty_kernel()), or the point-collocation baseline
      * (collocation_kernel()), chosen once per pair. Pairs are evaluated in
      * parallel and summed in a fixed order (reproducible).
+     *
+     * The candidate pairs (boxes overlapping) are kept in a list found with
+     * a margin @f$m@f$ and shared by every call (residual and tangent, the
+     * sparsity check, the line search's energies, the penetrations) until
+     * some vertex has moved more than @f$m/2@f$ since: boxes that overlap
+     * at the new positions overlapped, enlarged by @f$m@f$, at the old ones,
+     * so the list holds every pair the search would find (a Verlet list).
+     * The extra pairs do not intersect and add nothing.
      */
     class BodyContactAssembler : public ContactInteraction
     {
@@ -65,6 +73,14 @@ namespace TissueContact
       bool
       has_couplings(const Vector<double>  &u,
                     const SparsityPattern &pattern) const override;
+
+      /** How often the candidate list was searched (the tree refitted
+       * or rebuilt, and walked). */
+      unsigned int
+      n_searches() const
+      {
+        return n_candidate_searches;
+      }
 
       /** How often the tree was rebuilt (a vertex moved farther than the
        * mean tetrahedron size since the last build). */
@@ -143,6 +159,41 @@ namespace TissueContact
       void
       refit(const std::vector<Point<3>> &x) const;
 
+      /** A (triangle, tetrahedron) pair whose boxes overlap, and the index
+       * of its body pair in pairs. */
+      struct Candidate
+      {
+        unsigned int t, k, pair;
+      };
+      /** The candidate list: the candidates of surface_triangles[i] are
+       * candidates[offsets[i]] .. candidates[offsets[i + 1] - 1], in the
+       * tree walk's order (the order of the sums). */
+      mutable std::vector<Candidate>    candidates;
+      mutable std::vector<unsigned int> offsets;
+      mutable std::vector<Point<3>>     x_at_candidates;
+      mutable bool                      have_candidates      = false;
+      mutable unsigned int              n_candidate_searches = 0;
+      /** The triangles of the surface bodies of the pairs. */
+      std::vector<unsigned int> surface_triangles;
+      /** The list's margin m: a tenth of the mean tetrahedron box
+       * diagonal. */
+      double candidate_margin = 0.;
+
+      /** Make the candidate list valid for the positions @p x (search
+       * again if a vertex moved more than half the margin). */
+      void
+      update_candidates(const std::vector<Point<3>> &x) const;
+
+      /** Call @p f(t, k, pair) for every candidate of surface_triangles[i]
+       * in the list. */
+      template <typename F>
+      void
+      for_each_listed_candidate_of(const unsigned int i, const F &f) const
+      {
+        for (unsigned int c = offsets[i]; c < offsets[i + 1]; ++c)
+          f(candidates[c].t, candidates[c].k, pairs[candidates[c].pair]);
+      }
+
       /** Call @p f(t, k, pair) for every candidate pair of triangle t
        * and tetrahedron k of a body pair (boxes overlapping after enlarging
        * the triangle's by @p margin), triangles that are faces of the
@@ -173,6 +224,20 @@ namespace TissueContact
       pair_geometry(const std::vector<Point<3>> &x,
                     const unsigned int           t,
                     const unsigned int           k) const;
+
+      /** Whether the pair (triangle t, tetrahedron k) at @p geometry
+       * certainly has zero energy near this position, tested before the
+       * clipping (doc/theory/05-contact.md, sec. 5): the depth is zero at
+       * all four vertices of the tetrahedron, or a face plane of the
+       * tetrahedron separates the triangle from it (every vertex of the
+       * triangle is outside by more than 1e-6 in barycentric
+       * coordinates, or is a vertex of the tetrahedron on that face: the
+       * triangle then touches the tetrahedron in a point or an edge of
+       * zero depth, as a surface triangle does its neighbours). */
+      bool
+      rejected(const unsigned int  t,
+               const unsigned int  k,
+               const PairGeometry &geometry) const;
 
       std::array<types::global_dof_index, 21>
       pair_dofs(const unsigned int t, const unsigned int k) const;

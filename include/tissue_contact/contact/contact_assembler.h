@@ -56,6 +56,11 @@ namespace TissueContact
       double
       energy(const Vector<double> &u) const;
 
+      /** Time the body pairs' search, energies, sparsity check and
+       * insertion in @p timer (null: not timed). */
+      void
+      set_timer(TimerOutput *timer) override;
+
       /** Number of contact triangles. */
       unsigned int
       n_triangles() const

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -59,6 +60,18 @@ namespace TissueContact
         (void)pattern;
         return true;
       }
+
+      /** Time the contact search, the line search's energies, the
+       * sparsity check and the matrix insertion in sections of @p timer
+       * named "contact: ..." (null: not timed). */
+      virtual void
+      set_timer(TimerOutput *timer)
+      {
+        this->timer = timer;
+      }
+
+    protected:
+      TimerOutput *timer = nullptr;
     };
   } // namespace Contact
 } // namespace TissueContact

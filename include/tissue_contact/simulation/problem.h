@@ -97,11 +97,14 @@ namespace TissueContact
       return prescribed.size();
     }
     /** While set, contact assembly is timed as the section "assembly:
-     * contact part" of @p timer (null: not timed). */
+     * contact part" of @p timer, and its search, energies, sparsity check
+     * and insertion as "contact: ..." (null: not timed). */
     void
     set_timer(TimerOutput *timer)
     {
       this->timer = timer;
+      if (contact)
+        contact->set_timer(timer);
     }
 
     // NonlinearProblem

@@ -4,7 +4,9 @@
 #include <tissue_contact/simulation/problem.h>
 
 #include <functional>
+#include <map>
 #include <ostream>
+#include <string>
 
 namespace TissueContact
 {
@@ -54,9 +56,18 @@ namespace TissueContact
       return nonlinear_problem;
     }
 
+    /** The wall time of every timer section of the last run() (seconds;
+     * doc/users/running.md lists them), and "total" (the whole run). */
+    const std::map<std::string, double> &
+    section_times() const
+    {
+      return times;
+    }
+
   private:
-    Problem        nonlinear_problem;
-    Vector<double> u;
-    std::ostream  &out;
+    std::map<std::string, double> times;
+    Problem                       nonlinear_problem;
+    Vector<double>                u;
+    std::ostream                 &out;
   };
 } // namespace TissueContact

@@ -1,0 +1,171 @@
+// Benchmark (not a test): the knee-scale scene, start to end, on 1 and 2
+// threads. By default prm/knee_tube.prm (meshes/knee_tube.geo: 46 863
+// tetrahedra, 32 217 unknowns, 7 718 self-contact triangles, 150 degrees
+// in 50 increments); any static scene can be given instead. Prints, per
+// thread count, the wall time of the set-up (meshing included) and of the
+// run, the increments and iterations, the time split, and the peak
+// memory (resident set) of the process.
+//
+//   cmake --build build --target performance
+//   build/tests/performance/knee [--quick] [scene.prm]
+//
+// --quick meshes the tube at h 0.012 (7 294 tetrahedra) instead of 0.0062.
+// Each thread count runs in its own process (the peak memory is that
+// run's). Needs gmsh on the PATH for a Source = geo scene.
+
+#include <tissue_contact/simulation/static_simulation.h>
+
+#include <deal.II/base/multithread_info.h>
+#include <deal.II/base/timer.h>
+
+#include <sys/resource.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+using namespace dealii;
+using namespace TissueContact;
+
+namespace
+{
+  // the columns of the time split, from the run's timer sections
+  // (doc/users/running.md)
+  const std::vector<std::string> columns = {"elastic",
+                                            "search",
+                                            "kernels",
+                                            "insertion",
+                                            "energy",
+                                            "pattern",
+                                            "solve",
+                                            "output"};
+
+  double
+  section(const std::map<std::string, double> &t, const std::string &name)
+  {
+    const auto it = t.find(name);
+    return it == t.end() ? 0. : it->second;
+  }
+
+  // One run in this process: print one table row.
+  int
+  run_one(const std::string &prm_file, const bool quick)
+  {
+    const std::string source(SOURCE_DIR "/../..");
+    std::ifstream     in(prm_file);
+    AssertThrow(in, ExcMessage("cannot read " + prm_file));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string prm = text.str();
+    // paths relative to the prm file's folder
+    const std::string folder =
+      std::filesystem::absolute(prm_file).parent_path().string();
+    for (std::size_t at = prm.find("../"); at != std::string::npos;
+         at             = prm.find("../", at + folder.size() + 4))
+      prm.insert(at, folder + "/");
+    if (quick)
+      prm +=
+        "\nsubsection Mesh\n  set Gmsh options = -setnumber h 0.012\nend\n";
+    const std::string out_dir =
+      (std::filesystem::temp_directory_path() / "tissue_contact_knee_benchmark")
+        .string();
+    prm += "\nsubsection Output\n  set Directory = " + out_dir +
+           "\n  set Print timing = false\nend\n";
+
+    Timer              setup;
+    std::ostringstream log;
+    StaticSimulation   sim(Scene::SceneParameters::from_string(prm), log);
+    const double       t_setup = setup.wall_time();
+    SolveStatistics    s;
+    try
+      {
+        s = sim.run();
+      }
+    catch (const std::exception &e)
+      {
+        std::cout << "run failed: " << e.what() << "\n";
+        return 1;
+      }
+    const auto  &t         = sim.section_times();
+    const auto  *contact   = sim.problem().contact_assembler();
+    const double search    = section(t, "contact: search"),
+                 kernels   = section(t, "contact: kernels"),
+                 insertion = section(t, "contact: insertion"),
+                 energy    = section(t, "contact: energy"),
+                 pattern   = section(t, "contact: sparsity check");
+    const double elastic =
+      section(t, "assembly") - search - kernels - energy - pattern;
+    rusage usage;
+    getrusage(RUSAGE_SELF, &usage);
+
+    std::cout << std::left << std::setw(8) << MultithreadInfo::n_threads()
+              << std::setw(7)
+              << sim.problem().get_scene().triangulation.n_active_cells()
+              << std::setw(7) << sim.problem().n_dofs() << std::setw(7)
+              << (contact ? contact->n_triangles() : 0) << std::setw(6)
+              << s.increments << std::setw(5) << s.cutbacks << std::setw(7)
+              << s.newton_iterations << std::setw(8) << s.linear_iterations
+              << std::fixed << std::setprecision(1) << std::setw(7) << t_setup
+              << std::setw(8) << section(t, "total");
+    for (const double v : {elastic,
+                           search,
+                           kernels - insertion,
+                           insertion,
+                           energy,
+                           pattern,
+                           section(t, "linear solve"),
+                           section(t, "output")})
+      std::cout << std::setw(10) << v;
+    std::cout << usage.ru_maxrss / 1024 << "\n";
+    return 0;
+  }
+} // namespace
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
+  bool                             quick = false, child = false;
+  std::string                      prm = SOURCE_DIR "/../../prm/knee_tube.prm";
+  for (int i = 1; i < argc; ++i)
+    {
+      const std::string a = argv[i];
+      if (a == "--quick")
+        quick = true;
+      else if (a == "--child")
+        child = true;
+      else
+        prm = a;
+    }
+  if (child)
+    return run_one(prm, quick);
+
+  std::cout << "The knee-scale scene " << prm << (quick ? " (--quick)" : "")
+            << ", start to end. Times in s (wall); elastic: the elastic "
+               "assembly and the rest of the Newton loop's assembly "
+               "section; search, kernels, insertion: the contact pairs' "
+               "search, kernels and matrix insertion; energy: the line "
+               "search's contact energies; pattern: the contact sparsity "
+               "check; memory: peak resident set in MiB\n\n"
+            << std::left << std::setw(8) << "threads" << std::setw(7) << "tets"
+            << std::setw(7) << "dofs" << std::setw(7) << "tris" << std::setw(6)
+            << "incr" << std::setw(5) << "cut" << std::setw(7) << "Newton"
+            << std::setw(8) << "linear" << std::setw(7) << "setup"
+            << std::setw(8) << "run";
+  for (const auto &c : columns)
+    std::cout << std::setw(10) << c;
+  std::cout << "MiB" << std::endl;
+  int status = 0;
+  for (const unsigned int threads : {1u, 2u})
+    {
+      std::ostringstream cmd;
+      cmd << "DEAL_II_NUM_THREADS=" << threads << " " << argv[0] << " --child "
+          << (quick ? "--quick " : "") << "'" << prm << "'";
+      status |= std::system(cmd.str().c_str());
+    }
+  return status == 0 ? 0 : 1;
+}
