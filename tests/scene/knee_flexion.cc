@@ -3,10 +3,11 @@
 // 30 increments of 3 degrees: femur fixed, tibia rotated, the patella a free
 // rigid body held by its ligament and tendon, the skin-fat layer sliding
 // over everything and folding onto itself behind the knee. The log prints
-// the angle reached, increments, cut-backs, Newton iterations, the largest
-// penetration as a fraction of the local element size (must stay below
-// 10 %), and the patella's motion: it must travel down and around the
-// condyles (its center moves backwards and down, it turns with the tibia).
+// the angle reached, whether the cut-backs and Newton iterations stay within
+// bounds (the counts go to the console: they vary with the rounding), whether
+// the largest penetration stays below 10 % of the local element size, and the
+// patella's motion: it must travel down and around the condyles (its center
+// moves backwards and down, it turns with the tibia).
 
 #include "scenes.h"
 
@@ -41,16 +42,13 @@ main(int argc, char **argv)
   deallog << "mesh: " << problem.get_scene().triangulation.n_active_cells()
           << " tetrahedra, " << problem.n_dofs() << " unknowns, "
           << problem.contact_assembler()->n_triangles() << " contact triangles"
-          << std::endl
-          << "flexed to " << int(angle) << " degrees in "
-          << statistics.increments << " increments (" << statistics.cutbacks
-          << " cut back), " << statistics.newton_iterations
-          << " Newton iterations" << std::endl
-          << "largest penetration / local element size " << std::setprecision(2)
-          << penetration
-          << " (below 0.1: " << (penetration < 0.1 ? "yes" : "no") << ")"
-          << std::endl
-          << "patella: center moved by " << std::fixed << std::setprecision(1)
+          << std::endl;
+  SceneTests::log_effort(statistics,
+                         "flexed to " + std::to_string(int(angle)) + " degrees",
+                         15,
+                         2000);
+  SceneTests::log_penetration(penetration);
+  deallog << "patella: center moved by " << std::fixed << std::setprecision(1)
           << 1000. * t << " mm (|t| = " << 1000. * t.norm()
           << " mm), turned by " << theta.norm() * 180. / M_PI
           << " degrees about " << std::setprecision(2) << theta / theta.norm()
