@@ -86,6 +86,10 @@ namespace TissueContact
                   ExcMessage("cannot write the output file '" + path + "'"));
       DataOutBase::VtkFlags flags;
       flags.time = time;
+      // zlib's fastest level: on the knee-scale tube (7 069 tetrahedra, 50
+      // states) deal.II's default, best compression, took 110 ms a state,
+      // best speed 34 ms, for files 5 % larger (39 instead of 37 MB)
+      flags.compression_level = DataOutBase::VtkFlags::best_speed;
       data_out.set_flags(flags);
       data_out.write_vtu(out);
 

@@ -168,7 +168,7 @@ namespace TissueContact
           std::vector<Vector<double>>());
       Vector<double> R(n), R_trial(n), du(n), rhs(n), u_trial(n);
       const double   f_ext   = problem.external_force_norm(load_factor);
-      double         r_first = 0.;
+      double         r_first = 0., r_previous = 0., eta_previous = 0.;
 
       for (unsigned int it = 0;; ++it)
         {
@@ -186,7 +186,10 @@ namespace TissueContact
           {
             const auto scope = section("assembly");
             if (problem.update_sparsity_pattern(u))
-              K.reinit(problem.sparsity_pattern());
+              {
+                K.reinit(problem.sparsity_pattern());
+                linear_solver.pattern_changed();
+              }
             valid = problem.assemble(u, load_factor, R, &K);
           }
           if (!valid)
@@ -256,7 +259,11 @@ namespace TissueContact
               if (std::abs(K.diag_element(g.first)) < 1e-12 * diagonal)
                 K.diag_element(g.first) = diagonal;
             MatrixTools::apply_boundary_values(gap, K, du, rhs, true);
-            info.linear_iterations = linear_solver.solve(K, du, rhs);
+            const double eta =
+              linear_solver.forcing(r, r_previous, eta_previous, tolerance);
+            info.linear_iterations = linear_solver.solve(K, du, rhs, eta);
+            r_previous             = r;
+            eta_previous           = eta;
           }
 
           // LOOP 3: line search. Energy merit (Armijo) when asked for and

@@ -50,6 +50,12 @@ namespace
     return it == t.end() ? 0. : it->second;
   }
 
+  // where the children leave their rows of the second table
+  const std::string evaluations_file =
+    (std::filesystem::temp_directory_path() /
+     "tissue_contact_knee_benchmark_evaluations.txt")
+      .string();
+
   // One run in this process: print one table row.
   int
   run_one(const std::string &prm_file, const bool quick)
@@ -75,6 +81,7 @@ namespace
     prm += "\nsubsection Output\n  set Directory = " + out_dir +
            "\n  set Print timing = false\nend\n";
 
+    std::ostringstream evaluations;
     Timer              setup;
     std::ostringstream log;
     StaticSimulation   sim(Scene::SceneParameters::from_string(prm), log);
@@ -101,6 +108,34 @@ namespace
     rusage usage;
     getrusage(RUSAGE_SELF, &usage);
 
+    // one evaluation of each kind at the end state (ms, mean of 3)
+    Problem             &problem = sim.problem();
+    const auto           n       = problem.n_dofs();
+    SparseMatrix<double> K(problem.sparsity_pattern());
+    Vector<double>       R(n);
+    const auto           mean_ms = [](const auto &f) {
+      Timer timer;
+      for (unsigned int r = 0; r < 3; ++r)
+        f();
+      return 1e3 * timer.wall_time() / 3;
+    };
+    const auto &u = sim.solution();
+    evaluations << std::left << std::setw(8) << MultithreadInfo::n_threads()
+                << std::fixed << std::setprecision(1) << std::setw(12)
+                << mean_ms([&]() { problem.assemble(u, 1., R, &K); })
+                << std::setw(12)
+                << mean_ms([&]() { problem.assemble(u, 1., R, nullptr); })
+                << std::setw(12) << mean_ms([&]() { problem.energy(u, 1.); })
+                << std::setw(12) << mean_ms([&]() {
+                     if (contact)
+                       contact->assemble(problem.displacement(u), R, &K);
+                   })
+                << std::setw(12) << mean_ms([&]() {
+                     if (contact)
+                       contact->energy(problem.displacement(u));
+                   })
+                << "\n";
+
     std::cout << std::left << std::setw(8) << MultithreadInfo::n_threads()
               << std::setw(7)
               << sim.problem().get_scene().triangulation.n_active_cells()
@@ -120,6 +155,7 @@ namespace
                            section(t, "output")})
       std::cout << std::setw(10) << v;
     std::cout << usage.ru_maxrss / 1024 << "\n";
+    std::ofstream(evaluations_file, std::ios::app) << evaluations.str();
     return 0;
   }
 } // namespace
@@ -159,6 +195,7 @@ main(int argc, char **argv)
   for (const auto &c : columns)
     std::cout << std::setw(10) << c;
   std::cout << "MiB" << std::endl;
+  std::filesystem::remove(evaluations_file);
   int status = 0;
   for (const unsigned int threads : {1u, 2u})
     {
@@ -167,5 +204,16 @@ main(int argc, char **argv)
           << (quick ? "--quick " : "") << "'" << prm << "'";
       status |= std::system(cmd.str().c_str());
     }
+  std::cout << "\nOne evaluation at the end state (ms): residual and "
+               "tangent, residual alone, energy (elasticity and contact), "
+               "then the contact part of the first and of the last\n\n"
+            << std::left << std::setw(8) << "threads" << std::setw(12)
+            << "R + K" << std::setw(12) << "R" << std::setw(12) << "energy"
+            << std::setw(12) << "contact R+K" << std::setw(12) << "contact W"
+            << "\n";
+  std::ifstream     rows(evaluations_file);
+  std::stringstream text;
+  text << rows.rdbuf();
+  std::cout << text.str();
   return status == 0 ? 0 : 1;
 }

@@ -434,6 +434,11 @@ namespace
     const unsigned int amg =
       compare("GMRES+AMG (rel. tol. 0.1)",
               "subsection Linear solver\n set Type = GMRES+AMG\nend\n");
+    const unsigned int adaptive =
+      compare("GMRES+AMG (Eisenstat-Walker, hierarchy reused)",
+              "subsection Linear solver\n set Type = GMRES+AMG\n"
+              " set Forcing term = Eisenstat-Walker\n"
+              " set Reuse preconditioner = true\nend\n");
     const unsigned int viscous =
       compare("direct with quasi-viscosity",
               "subsection Newton\n set Quasi-viscosity = true\nend\n");
@@ -445,7 +450,29 @@ namespace
     deallog << "Newton iterations: direct " << direct << ", GMRES+AMG " << amg
             << ", direct + quasi-viscosity " << viscous
             << "; GMRES+Jacobi (inexact) between direct and 3x direct: "
-            << (jacobi > direct && jacobi < 3 * direct) << std::endl;
+            << (jacobi > direct && jacobi < 3 * direct)
+            << "; GMRES+AMG (Eisenstat-Walker) at most 2x direct: "
+            << (adaptive <= 2 * direct) << std::endl;
+  }
+
+  // The Eisenstat-Walker forcing term (doc/theory/04-solver.md, 4.5.1)
+  // against the formula, branch by branch.
+  void
+  forcing_term()
+  {
+    Solvers::LinearSolver::Parameters p;
+    p.type               = "GMRES+AMG";
+    p.relative_tolerance = 0.5;
+    const Solvers::LinearSolver fixed(p);
+    p.forcing_term = "Eisenstat-Walker";
+    const Solvers::LinearSolver ew(p);
+    deallog << "forcing terms: fixed " << fixed.forcing(0.1, 1., 0.5, 0.)
+            << "; first iteration " << ew.forcing(1., 0., 0., 0.)
+            << "; 0.9 (0.1/1)^2 = " << ew.forcing(0.1, 1., 0.01, 0.)
+            << "; safeguard 0.9 0.4^2 = " << ew.forcing(0.01, 0.1, 0.4, 0.)
+            << "; capped 0.9 (0.9)^2 -> " << ew.forcing(0.9, 1., 0.01, 0.)
+            << "; floor 0.5 tol / r = " << ew.forcing(1e-3, 1., 0.01, 2e-4)
+            << std::endl;
   }
 
   void
@@ -501,5 +528,6 @@ main(int argc, char **argv)
   line_search();
   quadratic_convergence();
   solvers_agree();
+  forcing_term();
   rigid_body();
 }

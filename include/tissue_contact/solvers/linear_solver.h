@@ -2,8 +2,11 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -39,6 +42,10 @@ namespace TissueContact
         double       relative_tolerance = 0.1;
         unsigned int max_iterations     = 1000;
         bool         amg_rotations      = false;
+        /** "fixed" (relative_tolerance) or "Eisenstat-Walker". */
+        std::string forcing_term = "fixed";
+        /** Keep the AMG hierarchy from one solve to the next. */
+        bool reuse_preconditioner = false;
 
         /** Whether the solver uses a near-null space (GMRES+AMG): the
          * others need none, so none is computed for them. */
@@ -59,12 +66,52 @@ namespace TissueContact
       LinearSolver(const Parameters                  &parameters,
                    const std::vector<Vector<double>> &near_null_space = {});
 
-      /** Solve @f$K x = b@f$; returns the number of iterations (1 for the
-       * direct solver). Throws if the result is not finite. */
+      /** Solve @f$K x = b@f$ to the relative residual @p
+       * relative_tolerance (iterative solvers; negative: the prm's);
+       * returns the number of iterations (1 for the direct solver). Throws
+       * if the result is not finite. With Reuse preconditioner, the AMG
+       * hierarchy of an earlier solve is kept while it converges no more
+       * than 1.5 times slower (iterations per decade of residual) than it
+       * did when it was built, and rebuilt at once if GMRES reaches its
+       * cap with it. */
       unsigned int
       solve(const SparseMatrix<double> &K,
             Vector<double>             &x,
-            const Vector<double>       &b) const;
+            const Vector<double>       &b,
+            const double                relative_tolerance = -1.) const;
+
+      /** The matrix's sparsity pattern has changed: the next solve builds
+       * a new preconditioner. */
+      void
+      pattern_changed() const
+      {
+        amg.reset();
+      }
+
+      /**
+       * The relative tolerance of the linear solve of Newton iteration k
+       * (doc/theory/04-solver.md, sec. 4.5.1): with the fixed forcing term,
+       * Relative tolerance; with Eisenstat-Walker (1996, choice 2,
+       * @f$\gamma = 0.9@f$, @f$\alpha = 2@f$)
+       * @f$\eta_k = \gamma (|R_k|/|R_{k-1}|)^\alpha@f$, kept above
+       * @f$\gamma\eta_{k-1}^\alpha@f$ when that exceeds 0.1, above
+       * @f$\tfrac12 \tau/|R_k|@f$ (no solve much beyond the Newton
+       * tolerance @f$\tau@f$) and below @f$\eta_{max}@f$ = Relative
+       * tolerance. @p r_previous = 0: the first iteration,
+       * @f$\eta_0 = \eta_{max}@f$.
+       */
+      double
+      forcing(const double r,
+              const double r_previous,
+              const double eta_previous,
+              const double tolerance) const;
+
+      /** How often an AMG hierarchy was built. */
+      unsigned int
+      n_preconditioner_setups() const
+      {
+        return n_setups;
+      }
 
       const Parameters parameters;
 
@@ -72,6 +119,22 @@ namespace TissueContact
       /** The near-null space, mode after mode (ML's layout). */
       std::vector<double> null_space;
       unsigned int        null_space_dimension;
+
+      /** GMRES with AMG; builds the hierarchy if there is none. */
+      unsigned int
+      solve_amg(const SparseMatrix<double> &K,
+                Vector<double>             &x,
+                const Vector<double>       &b,
+                const double                relative_tolerance,
+                bool                       &converged) const;
+
+      mutable std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+      /** The matrix the hierarchy was built from (ML keeps a reference). */
+      mutable TrilinosWrappers::SparseMatrix amg_matrix;
+      /** Iterations per decade of residual of the first solve with the
+       * current hierarchy. */
+      mutable double       fresh_rate = 0.;
+      mutable unsigned int n_setups   = 0;
     };
   } // namespace Solvers
 } // namespace TissueContact
