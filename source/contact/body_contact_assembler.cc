@@ -254,7 +254,27 @@ namespace TissueContact
             separates[i] =
               separates[i] && (shared < 4 ? shared != i : lambda[i] < -1e-6);
         }
-      return separates[0] || separates[1] || separates[2] || separates[3];
+      if (separates[0] || separates[1] || separates[2] || separates[3])
+        return true;
+      // the triangle's plane separates if every vertex of the tetrahedron
+      // lies on one side of it (beyond 1e-6 of the triangle's size), or is a
+      // vertex of the triangle (on the plane)
+      const Tensor<1, 3> normal =
+        cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]);
+      const double n = normal.norm();
+      if (!(n > 0.))
+        return false;
+      const double limit = 1e-6 * std::sqrt(n);
+      bool         above = true, below = true;
+      for (unsigned int j = 0; j < 4; ++j)
+        {
+          if (std::find(tv.begin(), tv.end(), kv[j]) != tv.end())
+            continue;
+          const double d = normal * (tet[j] - tri[0]) / n;
+          above          = above && d > limit;
+          below          = below && d < -limit;
+        }
+      return above || below;
     }
 
 

@@ -95,6 +95,7 @@ namespace TissueContact
   void
   Problem::rebuild_sparsity_pattern(const Vector<double> &u)
   {
+    ++n_pattern_builds;
     const bool body_contact =
       contact && !scene.parameters.contact.pairs.empty();
     if (!body_contact && !rigid)

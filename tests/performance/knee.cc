@@ -17,6 +17,8 @@
 
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <sys/resource.h>
 
@@ -120,6 +122,11 @@ namespace
       return 1e3 * timer.wall_time() / 3;
     };
     const auto &u = sim.solution();
+    // the finite element pattern alone, for comparison
+    DynamicSparsityPattern dsp(problem.discretization().n_dofs());
+    DoFTools::make_sparsity_pattern(problem.discretization().dof_handler, dsp);
+    SparsityPattern fe_pattern;
+    fe_pattern.copy_from(dsp);
     evaluations << std::left << std::setw(8) << MultithreadInfo::n_threads()
                 << std::fixed << std::setprecision(1) << std::setw(12)
                 << mean_ms([&]() { problem.assemble(u, 1., R, &K); })
@@ -134,7 +141,12 @@ namespace
                      if (contact)
                        contact->energy(problem.displacement(u));
                    })
-                << "\n";
+                << std::setw(10)
+                << problem.sparsity_pattern().n_nonzero_elements() / 1e6
+                << std::setw(10) << fe_pattern.n_nonzero_elements() / 1e6
+                << std::setw(10)
+                << problem.sparsity_pattern().max_entries_per_row()
+                << problem.n_sparsity_patterns() << "\n";
 
     std::cout << std::left << std::setw(8) << MultithreadInfo::n_threads()
               << std::setw(7)
@@ -206,11 +218,16 @@ main(int argc, char **argv)
     }
   std::cout << "\nOne evaluation at the end state (ms): residual and "
                "tangent, residual alone, energy (elasticity and contact), "
-               "then the contact part of the first and of the last\n\n"
+               "then the contact part of the first and of the last; the "
+               "matrix's nonzeros (millions), those of the finite element "
+               "pattern alone, the longest row, and how often the pattern "
+               "was built in the run\n\n"
             << std::left << std::setw(8) << "threads" << std::setw(12)
             << "R + K" << std::setw(12) << "R" << std::setw(12) << "energy"
             << std::setw(12) << "contact R+K" << std::setw(12) << "contact W"
-            << "\n";
+            << std::setw(10) << "nnz (M)" << std::setw(10) << "FE nnz"
+            << std::setw(10) << "max row"
+            << "patterns\n";
   std::ifstream     rows(evaluations_file);
   std::stringstream text;
   text << rows.rdbuf();

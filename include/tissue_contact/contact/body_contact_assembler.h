@@ -233,7 +233,10 @@ namespace TissueContact
        * triangle is outside by more than 1e-6 in barycentric
        * coordinates, or is a vertex of the tetrahedron on that face: the
        * triangle then touches the tetrahedron in a point or an edge of
-       * zero depth, as a surface triangle does its neighbours). */
+       * zero depth, as a surface triangle does its neighbours), or the
+       * triangle's plane separates them (every vertex of the tetrahedron
+       * beyond 1e-6 of the triangle's size on one side, or a vertex of the
+       * triangle). */
       bool
       rejected(const unsigned int  t,
                const unsigned int  k,

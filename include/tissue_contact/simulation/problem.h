@@ -156,8 +156,19 @@ namespace TissueContact
      * margin of half the smallest cell diameter, so that nearby pairs do
      * not force a rebuild at every iteration). */
     void
-    rebuild_sparsity_pattern(const Vector<double> &u);
+                 rebuild_sparsity_pattern(const Vector<double> &u);
+    unsigned int n_pattern_builds = 0;
 
+  public:
+    /** How often the sparsity pattern was built (once at the start, again
+     * when an active contact pair lacked its couplings). */
+    unsigned int
+    n_sparsity_patterns() const
+    {
+      return n_pattern_builds;
+    }
+
+  private:
     Scene::Scene                               scene;
     Discretization                             disc;
     Elasticity::ElasticAssembler               assembler;
