@@ -142,17 +142,6 @@ namespace TissueContact
               }
           f_ext.add(dofs, local);
         }
-      // cells in the order of their lowest DoF, so that consecutive cells
-      // write nearby rows of the tangent: on the knee-scale tube (46 863
-      // tetrahedra, a 20 MB matrix) in gmsh's cell order the scatter missed
-      // the cache so often that residual and tangent took 270 ms, in this
-      // order 137 ms (one thread; residual alone: 30 ms)
-      std::stable_sort(deformable_cells.begin(),
-                       deformable_cells.end(),
-                       [&](const unsigned int a, const unsigned int b) {
-                         return sorted_dofs[a * n_local] <
-                                sorted_dofs[b * n_local];
-                       });
     }
 
 
