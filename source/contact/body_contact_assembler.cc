@@ -94,17 +94,11 @@ namespace TissueContact
       // lists appended in the triangles' order
       candidates.clear();
       offsets.assign(1, 0);
-      struct Scratch
-      {};
-      WorkStream::run(
-        surface_triangles.cbegin(),
-        surface_triangles.cend(),
-        [&](const std::vector<unsigned int>::const_iterator &it,
-            Scratch &,
-            std::vector<Candidate> &found) {
+      per_surface_triangle(
+        [&](const unsigned int i, std::vector<Candidate> &found) {
           found.clear();
           for_each_candidate_of(
-            *it,
+            surface_triangles[i],
             x,
             candidate_margin,
             [&](const unsigned int t,
@@ -118,13 +112,9 @@ namespace TissueContact
           candidates.insert(candidates.end(), found.begin(), found.end());
           offsets.push_back(candidates.size());
         },
-        Scratch(),
-        std::vector<Candidate>(),
-        MultithreadInfo::n_threads(),
-        8);
+        std::vector<Candidate>());
       x_at_candidates = x;
       have_candidates = true;
-      ++n_candidate_searches;
     }
 
 
@@ -363,17 +353,11 @@ namespace TissueContact
         std::vector<Result> results;
         unsigned int        n = 0;
       };
-      struct Scratch
-      {};
-      WorkStream::run(
-        surface_triangles.cbegin(),
-        surface_triangles.cend(),
-        [&](const std::vector<unsigned int>::const_iterator &it,
-            Scratch &,
-            Copy &c) {
+      per_surface_triangle(
+        [&](const unsigned int i, Copy &c) {
           c.n = 0;
           for_each_listed_candidate_of(
-            it - surface_triangles.cbegin(),
+            i,
             [&](const unsigned int t,
                 const unsigned int k,
                 const BodyContact &p) {
@@ -402,10 +386,7 @@ namespace TissueContact
           for (unsigned int i = 0; i < c.n; ++i)
             f(c.results[i].t, c.results[i].k, c.results[i].d);
         },
-        Scratch(),
-        Copy(),
-        MultithreadInfo::n_threads(),
-        8);
+        Copy());
     }
 
 
@@ -444,22 +425,16 @@ namespace TissueContact
       // add_couplings() adds whole 3 x 3 vertex blocks, so one entry per
       // vertex pair tells. The triangles in parallel.
       bool all = true;
-      struct Scratch
-      {};
       struct Has
       {
         bool all = true;
       };
-      WorkStream::run(
-        surface_triangles.cbegin(),
-        surface_triangles.cend(),
-        [&](const std::vector<unsigned int>::const_iterator &it,
-            Scratch &,
-            Has &c) {
+      per_surface_triangle(
+        [&](const unsigned int i, Has &c) {
           bool &has = c.all;
           has       = true;
           for_each_listed_candidate_of(
-            it - surface_triangles.cbegin(),
+            i,
             [&](const unsigned int t,
                 const unsigned int k,
                 const BodyContact &p) {
@@ -478,10 +453,7 @@ namespace TissueContact
             });
         },
         [&](const Has &c) { all = all && c.all; },
-        Scratch(),
-        Has(),
-        MultithreadInfo::n_threads(),
-        8);
+        Has());
       return all;
     }
 
@@ -565,18 +537,12 @@ namespace TissueContact
       const auto scope = time_section(timer, "contact: energy");
       // each triangle's pair energies in parallel, added serially in the
       // list's order (the sums are those of a serial loop)
-      struct Scratch
-      {};
       using Energies = std::vector<std::pair<unsigned int, double>>;
-      WorkStream::run(
-        surface_triangles.cbegin(),
-        surface_triangles.cend(),
-        [&](const std::vector<unsigned int>::const_iterator &it,
-            Scratch &,
-            Energies &e) {
+      per_surface_triangle(
+        [&](const unsigned int i, Energies &e) {
           e.clear();
           for_each_listed_candidate_of(
-            it - surface_triangles.cbegin(),
+            i,
             [&](const unsigned int t,
                 const unsigned int k,
                 const BodyContact &p) {
@@ -592,10 +558,7 @@ namespace TissueContact
           for (const auto &[p, w] : e)
             W[p] += w;
         },
-        Scratch(),
-        Energies(),
-        MultithreadInfo::n_threads(),
-        8);
+        Energies());
       return W;
     }
   } // namespace Contact

@@ -157,7 +157,6 @@ namespace TissueContact
                      const_cast<double *>(null_space.data()));
               amg->initialize(amg_matrix, ml);
             }
-          ++n_setups;
         }
       ReductionControl control(
         parameters.max_iterations, 1e-300, relative_tolerance, false, false);

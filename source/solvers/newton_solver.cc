@@ -157,9 +157,6 @@ namespace TissueContact
           (prescribed[i] ? reaction : free) += R[i] * R[i];
         return std::make_pair(std::sqrt(free), std::sqrt(reaction));
       };
-      const auto section = [&](const char *name) {
-        return time_section(timer, name);
-      };
 
       const LinearSolver linear_solver(
         parameters.linear_solver,
@@ -184,7 +181,7 @@ namespace TissueContact
 
           bool valid;
           {
-            const auto scope = section("assembly");
+            const auto scope = time_section(timer, "assembly");
             if (problem.update_sparsity_pattern(u))
               {
                 K.reinit(problem.sparsity_pattern());
@@ -229,7 +226,7 @@ namespace TissueContact
 
           // LOOP 2: (K + D/dt) du = -R, du = gap on prescribed DoFs
           {
-            const auto scope = section("linear solve");
+            const auto scope = time_section(timer, "linear solve");
             // quasi-viscosity D/dt_k with dt_k = dt r_0 / r_k: full strength
             // at the start of the increment, fading as the residual falls
             // so that Newton keeps its quadratic rate near the solution
@@ -273,7 +270,7 @@ namespace TissueContact
           double E0 = std::numeric_limits<double>::quiet_NaN(), slope = 0.;
           if (parameters.energy_line_search && gap_norm == 0.)
             {
-              const auto scope = section("assembly");
+              const auto scope = time_section(timer, "assembly");
               E0               = problem.energy(u, load_factor);
               for (types::global_dof_index i = 0; i < n; ++i)
                 if (!prescribed[i])
@@ -290,7 +287,7 @@ namespace TissueContact
                 {
                   double E;
                   {
-                    const auto scope = section("assembly");
+                    const auto scope = time_section(timer, "assembly");
                     E                = problem.energy(u_trial, load_factor);
                   }
                   if (!std::isfinite(E))
@@ -307,7 +304,7 @@ namespace TissueContact
                 }
               bool trial_valid;
               {
-                const auto scope = section("assembly");
+                const auto scope = time_section(timer, "assembly");
                 trial_valid =
                   problem.assemble(u_trial, load_factor, R_trial, nullptr);
               }

@@ -6,6 +6,8 @@
 #include <tissue_contact/contact/contact_surface.h>
 #include <tissue_contact/contact/penalty_kernel.h>
 
+#include <deal.II/base/multithread_info.h>
+#include <deal.II/base/work_stream.h>
 #include <deal.II/grid/tria.h>
 
 #include <array>
@@ -73,14 +75,6 @@ namespace TissueContact
       bool
       has_couplings(const Vector<double>  &u,
                     const SparsityPattern &pattern) const override;
-
-      /** How often the candidate list was searched (the tree refitted
-       * or rebuilt, and walked). */
-      unsigned int
-      n_searches() const
-      {
-        return n_candidate_searches;
-      }
 
       /** How often the tree was rebuilt (a vertex moved farther than the
        * mean tetrahedron size since the last build). */
@@ -171,8 +165,7 @@ namespace TissueContact
       mutable std::vector<Candidate>    candidates;
       mutable std::vector<unsigned int> offsets;
       mutable std::vector<Point<3>>     x_at_candidates;
-      mutable bool                      have_candidates      = false;
-      mutable unsigned int              n_candidate_searches = 0;
+      mutable bool                      have_candidates = false;
       /** The triangles of the surface bodies of the pairs. */
       std::vector<unsigned int> surface_triangles;
       /** The list's margin m: a tenth of the mean tetrahedron box
@@ -183,6 +176,34 @@ namespace TissueContact
        * again if a vertex moved more than half the margin). */
       void
       update_candidates(const std::vector<Point<3>> &x) const;
+
+      /** WorkStream over the surface triangles: @p worker(i, copy) for
+       * surface_triangles[i] in parallel, @p copier(copy) serially in the
+       * triangles' order (sums are those of a serial loop); @p sample is
+       * the initial copy data. */
+      template <typename Worker, typename Copier, typename Copy>
+      void
+      per_surface_triangle(const Worker &worker,
+                           const Copier &copier,
+                           const Copy   &sample) const
+      {
+        struct Scratch
+        {};
+        WorkStream::run(
+          surface_triangles.cbegin(),
+          surface_triangles.cend(),
+          [&](const std::vector<unsigned int>::const_iterator &it,
+              Scratch &,
+              Copy &copy) {
+            worker(static_cast<unsigned int>(it - surface_triangles.cbegin()),
+                   copy);
+          },
+          copier,
+          Scratch(),
+          sample,
+          MultithreadInfo::n_threads(),
+          8);
+      }
 
       /** Call @p f(t, k, pair) for every candidate of surface_triangles[i]
        * in the list. */

@@ -106,13 +106,6 @@ namespace TissueContact
               const double eta_previous,
               const double tolerance) const;
 
-      /** How often an AMG hierarchy was built. */
-      unsigned int
-      n_preconditioner_setups() const
-      {
-        return n_setups;
-      }
-
       const Parameters parameters;
 
     private:
@@ -133,8 +126,7 @@ namespace TissueContact
       mutable TrilinosWrappers::SparseMatrix amg_matrix;
       /** Iterations per decade of residual of the first solve with the
        * current hierarchy. */
-      mutable double       fresh_rate = 0.;
-      mutable unsigned int n_setups   = 0;
+      mutable double fresh_rate = 0.;
     };
   } // namespace Solvers
 } // namespace TissueContact
