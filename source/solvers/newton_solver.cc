@@ -6,6 +6,7 @@
 #include <deal.II/numerics/matrix_tools.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace TissueContact
@@ -166,6 +167,9 @@ namespace TissueContact
       Vector<double> R(n), R_trial(n), du(n), rhs(n), u_trial(n);
       const double   f_ext   = problem.external_force_norm(load_factor);
       double         r_first = 0., r_previous = 0., eta_previous = 0.;
+      // the energy at u when the line search computed it at the accepted
+      // step (the start of the next line search), NaN otherwise
+      double E_at_u = std::numeric_limits<double>::quiet_NaN();
 
       for (unsigned int it = 0;; ++it)
         {
@@ -270,8 +274,13 @@ namespace TissueContact
           double E0 = std::numeric_limits<double>::quiet_NaN(), slope = 0.;
           if (parameters.energy_line_search && gap_norm == 0.)
             {
-              const auto scope = time_section(timer, "assembly");
-              E0               = problem.energy(u, load_factor);
+              if (std::isfinite(E_at_u))
+                E0 = E_at_u;
+              else
+                {
+                  const auto scope = time_section(timer, "assembly");
+                  E0               = problem.energy(u, load_factor);
+                }
               for (types::global_dof_index i = 0; i < n; ++i)
                 if (!prescribed[i])
                   slope += R[i] * du[i];
@@ -279,6 +288,7 @@ namespace TissueContact
           const bool use_energy = std::isfinite(E0) && slope < 0.;
           double     s          = 1.;
           bool       accepted   = false;
+          E_at_u                = std::numeric_limits<double>::quiet_NaN();
           for (unsigned int h = 0; h <= parameters.max_halvings; ++h, s *= 0.5)
             {
               u_trial = u;
@@ -292,6 +302,7 @@ namespace TissueContact
                   }
                   if (!std::isfinite(E))
                     continue; // an inverted element
+                  E_at_u = E;
                   if (std::abs(E - E0) > 1e-12 * std::abs(E0))
                     {
                       if (E <= E0 + 1e-4 * s * slope)
