@@ -310,6 +310,9 @@ namespace TissueContact
                       copy.K(local_index[a * 3 + i], local_index[b * 3 + k]);
         };
 
+      const bool by_position =
+        K != nullptr && &K->get_sparsity_pattern() == positions_pattern &&
+        K->n_nonzero_elements() == positions_entries;
       std::vector<double> row(n_local);
       const auto          copier = [&](const CopyData &copy) {
         if (!copy.valid)
@@ -320,7 +323,15 @@ namespace TissueContact
         const types::global_dof_index *dofs = &cell_dofs[copy.cell * n_local];
         for (unsigned int k = 0; k < n_local; ++k)
           R[dofs[k]] += copy.r[k];
-        if (K != nullptr)
+        if (by_position)
+          {
+            const unsigned int *at =
+              &positions[std::size_t(copy.cell) * n_local * n_local];
+            const double *k = &copy.K(0, 0);
+            for (unsigned int ij = 0; ij < n_local * n_local; ++ij)
+              SparseMatrix<double>::iterator(K, at[ij])->value() += k[ij];
+          }
+        else if (K != nullptr)
           {
             const types::global_dof_index *columns =
               &sorted_dofs[copy.cell * n_local];
@@ -345,6 +356,32 @@ namespace TissueContact
       if (valid)
         R.add(-load_factor, f_ext);
       return valid;
+    }
+
+
+    void
+    ElasticAssembler::use_matrix_pattern(const SparsityPattern &pattern)
+    {
+      AssertThrow(pattern.n_nonzero_elements() <
+                    std::numeric_limits<unsigned int>::max(),
+                  ExcNotImplemented());
+      const unsigned int n_cells = cell_material.size();
+      positions.resize(std::size_t(n_cells) * n_local * n_local);
+      for (const unsigned int c : deformable_cells)
+        {
+          const types::global_dof_index *dofs = &cell_dofs[c * n_local];
+          unsigned int *at = &positions[std::size_t(c) * n_local * n_local];
+          for (unsigned int i = 0; i < n_local; ++i)
+            for (unsigned int j = 0; j < n_local; ++j)
+              {
+                at[i * n_local + j] = pattern(dofs[i], dofs[j]);
+                AssertThrow(at[i * n_local + j] !=
+                              SparsityPattern::invalid_entry,
+                            ExcInternalError());
+              }
+        }
+      positions_pattern = &pattern;
+      positions_entries = pattern.n_nonzero_elements();
     }
 
 

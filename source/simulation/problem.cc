@@ -99,25 +99,26 @@ namespace TissueContact
     const bool body_contact =
       contact && !scene.parameters.contact.pairs.empty();
     if (!body_contact && !rigid)
+      sparsity.copy_from(disc.sparsity_pattern);
+    else
       {
-        sparsity.copy_from(disc.sparsity_pattern);
-        return;
+        DynamicSparsityPattern dsp(disc.n_dofs());
+        DoFTools::make_sparsity_pattern(disc.dof_handler, dsp);
+        if (body_contact)
+          contact->add_couplings(fe_displacement(u),
+                                 0.5 * GridTools::minimal_cell_diameter(
+                                         scene.triangulation),
+                                 dsp);
+        if (!rigid)
+          sparsity.copy_from(dsp);
+        else
+          {
+            DynamicSparsityPattern full;
+            rigid->add_couplings(dsp, full);
+            sparsity.copy_from(full);
+          }
       }
-    DynamicSparsityPattern dsp(disc.n_dofs());
-    DoFTools::make_sparsity_pattern(disc.dof_handler, dsp);
-    if (body_contact)
-      contact->add_couplings(fe_displacement(u),
-                             0.5 * GridTools::minimal_cell_diameter(
-                                     scene.triangulation),
-                             dsp);
-    if (!rigid)
-      {
-        sparsity.copy_from(dsp);
-        return;
-      }
-    DynamicSparsityPattern full;
-    rigid->add_couplings(dsp, full);
-    sparsity.copy_from(full);
+    assembler.use_matrix_pattern(sparsity);
   }
 
 

@@ -70,16 +70,29 @@ namespace TissueContact
 
       /**
        * Compute @p R and, when @p K is not null, the tangent at the
-       * displacement @p u and load factor @p load_factor. @p K must use
-       * the discretization's sparsity pattern. Returns false, leaving R and
-       * K unspecified, if @f$\det F \le 0@f$ at a quadrature point of any
-       * deformable cell (an inverted element).
+       * displacement @p u and load factor @p load_factor. @p K's sparsity
+       * pattern must contain the discretization's. Returns false, leaving R
+       * and K unspecified, if @f$\det F \le 0@f$ at a quadrature point of
+       * any deformable cell (an inverted element).
        */
       bool
       assemble(const Vector<double> &u,
                const double          load_factor,
                Vector<double>       &R,
                SparseMatrix<double> *K) const;
+
+      /**
+       * Find, once, where each cell's tangent entries lie in the value
+       * array of a matrix built on @p pattern (SparsityPattern::operator()).
+       * assemble() then adds a cell's entries at these positions instead of
+       * searching every row for its columns; a row widened by contact
+       * couplings made that search most of the elastic assembly. Call again
+       * whenever @p pattern changes; a matrix on another pattern, or on
+       * this one after its number of entries changed, is assembled by
+       * searching as before.
+       */
+      void
+      use_matrix_pattern(const SparsityPattern &pattern);
 
       /** @f$\Pi(u,\lambda)@f$, or +infinity if an element is inverted. */
       double
@@ -135,6 +148,11 @@ namespace TissueContact
       std::vector<const Materials::HyperelasticMaterial *> cell_hyperelastic;
       std::vector<unsigned int> local_component, local_node; // of dof k
       std::vector<unsigned int> deformable_cells;
+      // positions of cell c's entry (i, j) in the values of a matrix on
+      // positions_pattern: [c][i * n_local + j] (use_matrix_pattern())
+      std::vector<unsigned int> positions;
+      const SparsityPattern    *positions_pattern = nullptr;
+      std::size_t               positions_entries = 0;
 
       /** @f$F = I + \sum_k u_k\, e_{c_k}\otimes\nabla N_{a_k}@f$ at
        * quadrature point @p q of cell @p c. */
