@@ -89,10 +89,12 @@ namespace TissueContact
         "Line search",
         energy_line_search,
         {{"residual", false}, {"energy", true}},
-        "What a line-search step must decrease: the residual norm, or the "
-        "potential energy (Armijo; contact and other nonconvex problems, "
-        "falling back to the residual where the energy change is at rounding "
-        "level or the step is not a descent direction).");
+        "What a line-search step must decrease: the potential energy "
+        "(Armijo; falls back to the residual where the energy change is at "
+        "rounding level or the step is not a descent direction), or the "
+        "residual norm (the dissertation's; it crawls in steps of 1/64 on "
+        "bending, where the residual grows along a descent direction: "
+        "doc/theory/04-solver.md sec. 4.3).");
       prm.add_parameter("Quasi-viscosity",
                         quasi_viscosity,
                         "Add the nodal quasi-viscosity D/dt to the tangent "

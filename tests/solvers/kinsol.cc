@@ -63,7 +63,8 @@ end
   {
     // Newton with the residual line search, Newton with the energy line
     // search, KINSOL (its own line search on |F|^2)
-    const char    *settings[3] = {"  set Nonlinear solver = Newton\n",
+    const char    *settings[3] = {"  set Nonlinear solver = Newton\n"
+                                     "  set Line search = residual\n",
                                   "  set Nonlinear solver = Newton\n"
                                      "  set Line search = energy\n",
                                   "  set Nonlinear solver = KINSOL\n"};

@@ -50,7 +50,7 @@ namespace TissueContact
         double       residual_tolerance = 1e-8;
         double       absolute_tolerance = 1e-12;
         unsigned int max_halvings       = 20;
-        bool         energy_line_search = false;
+        bool         energy_line_search = true;
         /** "Newton" (the project's loop) or "KINSOL" per increment. */
         bool                     use_kinsol = false;
         KinsolSolver::Parameters kinsol;
