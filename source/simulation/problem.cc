@@ -95,6 +95,7 @@ namespace TissueContact
   void
   Problem::rebuild_sparsity_pattern(const Vector<double> &u)
   {
+    const auto scope = time_section(timer, "contact: pattern build");
     ++n_pattern_builds;
     const bool body_contact =
       contact && !scene.parameters.contact.pairs.empty();

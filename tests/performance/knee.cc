@@ -42,6 +42,7 @@ namespace
                                             "insertion",
                                             "energy",
                                             "pattern",
+                                            "rebuild",
                                             "solve",
                                             "output"};
 
@@ -104,9 +105,10 @@ namespace
                  kernels   = section(t, "contact: kernels"),
                  insertion = section(t, "contact: insertion"),
                  energy    = section(t, "contact: energy"),
-                 pattern   = section(t, "contact: sparsity check");
+                 pattern   = section(t, "contact: sparsity check"),
+                 rebuild   = section(t, "contact: pattern build");
     const double elastic =
-      section(t, "assembly") - search - kernels - energy - pattern;
+      section(t, "assembly") - search - kernels - energy - pattern - rebuild;
     rusage usage;
     getrusage(RUSAGE_SELF, &usage);
 
@@ -163,6 +165,7 @@ namespace
                            insertion,
                            energy,
                            pattern,
+                           rebuild,
                            section(t, "linear solve"),
                            section(t, "output")})
       std::cout << std::setw(10) << v;
@@ -198,7 +201,8 @@ main(int argc, char **argv)
                "section; search, kernels, insertion: the contact pairs' "
                "search, kernels and matrix insertion; energy: the line "
                "search's contact energies; pattern: the contact sparsity "
-               "check; memory: peak resident set in MiB\n\n"
+               "check; rebuild: the sparsity pattern's rebuilds when it "
+               "lacks a contact coupling; memory: peak resident set in MiB\n\n"
             << std::left << std::setw(8) << "threads" << std::setw(7) << "tets"
             << std::setw(7) << "dofs" << std::setw(7) << "tris" << std::setw(6)
             << "incr" << std::setw(5) << "cut" << std::setw(7) << "Newton"
