@@ -399,21 +399,42 @@ namespace TissueContact
         return;
       const std::vector<Point<3>> x = surface.positions(u);
       refit(x);
+      // the vertices' couplings first (7 x 7 per pair, in sorted rows),
+      // then each vertex row expanded to its 3 x 3 DoF blocks: a ninth of
+      // the insertions of adding each pair's 21 x 21 DoFs (the pattern
+      // builds were 7 % of the knee-scale tube's run that way)
+      DynamicSparsityPattern vertex_pattern(surface.X.size());
       for_each_candidate(
         x,
         margin,
         [&](const unsigned int t, const unsigned int k, const BodyContact &) {
-          // each row's columns in one sorted insertion
-          // (441 single insertions made the pattern
-          // builds 7 % of the knee-scale tube's run); a
-          // vertex shared by triangle and tetrahedron
-          // appears once
-          auto dofs = pair_dofs(t, k);
-          std::sort(dofs.begin(), dofs.end());
-          const auto end = std::unique(dofs.begin(), dofs.end());
-          for (auto i = dofs.begin(); i != end; ++i)
-            dsp.add_entries(*i, dofs.begin(), end, true);
+          const auto                 &tv = surface.triangles[t];
+          std::array<unsigned int, 7> v  = {{tets[k][0],
+                                             tets[k][1],
+                                             tets[k][2],
+                                             tets[k][3],
+                                             tv[0],
+                                             tv[1],
+                                             tv[2]}};
+          std::sort(v.begin(), v.end());
+          const auto end = std::unique(v.begin(), v.end());
+          for (auto a = v.begin(); a != end; ++a)
+            vertex_pattern.add_entries(*a, v.begin(), end, true);
         });
+      std::vector<types::global_dof_index> columns;
+      for (unsigned int a = 0; a < vertex_pattern.n_rows(); ++a)
+        {
+          if (vertex_pattern.row_length(a) == 0)
+            continue;
+          columns.clear();
+          for (auto b = vertex_pattern.begin(a); b != vertex_pattern.end(a);
+               ++b)
+            for (const auto dof : surface.vertex_dofs[b->column()])
+              columns.push_back(dof);
+          std::sort(columns.begin(), columns.end());
+          for (const auto row : surface.vertex_dofs[a])
+            dsp.add_entries(row, columns.begin(), columns.end(), true);
+        }
     }
 
 
