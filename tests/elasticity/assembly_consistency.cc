@@ -14,6 +14,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -47,9 +48,9 @@ check(const unsigned int degree)
   Elasticity::DeadLoads loads;
   loads.gravity      = Tensor<1, 3>({0., 0., -2.});
   loads.tractions[1] = Tensor<1, 3>({0.5, 0.3, -1.});
-  const Elasticity::ElasticAssembler assembler(disc,
-                                               {{0, {&m0, 3.}}, {1, {&m1, 1.}}},
-                                               loads);
+  Elasticity::ElasticAssembler assembler(disc,
+                                         {{0, {&m0, 3.}}, {1, {&m1, 1.}}},
+                                         loads);
 
   // total external force, summed per component, against rho0 g V per body
   // (volumes from the vertices) plus t A (the face x = 1 has area 1)
@@ -123,6 +124,31 @@ check(const unsigned int degree)
       asym = std::max(asym, std::abs(e->value() - K(e->column(), i)));
   deallog << "tangent asymmetry max |K - K^T| / max|K| "
           << error_bound(asym / K.linfty_norm()) << std::endl;
+
+  // the tangent added at precomputed positions (use_matrix_pattern()) is
+  // the row-searched one, on a pattern widened as contact couplings widen
+  // it (every fifth DoF coupled with every other)
+  DynamicSparsityPattern wide(disc.n_dofs());
+  for (types::global_dof_index i = 0; i < disc.n_dofs(); ++i)
+    for (auto e = disc.sparsity_pattern.begin(i);
+         e != disc.sparsity_pattern.end(i);
+         ++e)
+      wide.add(i, e->column());
+  for (types::global_dof_index i = 0; i < disc.n_dofs(); i += 5)
+    for (types::global_dof_index j = 0; j < disc.n_dofs(); ++j)
+      {
+        wide.add(i, j);
+        wide.add(j, i);
+      }
+  SparsityPattern wide_pattern;
+  wide_pattern.copy_from(wide);
+  SparseMatrix<double> K_searched(wide_pattern), K_positions(wide_pattern);
+  assembler.assemble(u, lambda, R, &K_searched);
+  assembler.use_matrix_pattern(wide_pattern);
+  assembler.assemble(u, lambda, R, &K_positions);
+  K_positions.add(-1., K_searched);
+  deallog << "tangent at precomputed positions - searched, max |entry|: "
+          << K_positions.linfty_norm() << std::endl;
 
   // an inverted element is reported, not assembled
   Vector<double>                       u_bad(u);
