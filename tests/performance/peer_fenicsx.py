@@ -41,7 +41,6 @@ L, W, H = 1.0, 0.1, 0.1
 INCREMENTS = 4
 TOLERANCE = 1e-10
 TIP = (L, 0.0, 0.0)
-DEBUG = False
 
 
 def make_mesh(h, path):
@@ -212,8 +211,6 @@ def run_fenicsx(mesh_file):
             reaction = np.linalg.norm(R.array[clamped_dofs])
             fem.petsc.set_bc(R, [bc])
             scale = max(lam.value * f_norm, reaction)
-            if DEBUG:
-                print(k, it, R.norm(), TOLERANCE * scale)
             if R.norm() <= TOLERANCE * scale:
                 break
             if it == 30:
