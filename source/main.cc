@@ -2,9 +2,11 @@
 //
 //   tissue-contact                     the built-in default scene
 //   tissue-contact scene.prm           a scene file (see prm/)
-//   tissue-contact --print-parameters  every parameter, documented
+//   tissue-contact --print-parameters  every parameter, documented (also
+//                                      =json and =markdown)
 
 #include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/base/interrupt.h>
 #include <tissue_contact/simulation/dynamic_simulation.h>
 #include <tissue_contact/simulation/static_simulation.h>
 
@@ -58,7 +60,7 @@ end
   print_usage(std::ostream &out)
   {
     out << "Usage: tissue-contact [FILE.prm]\n"
-           "       tissue-contact --print-parameters\n"
+           "       tissue-contact --print-parameters[=prm|json|markdown]\n"
            "Without a file, runs a small built-in scene (a twisted beam) and "
            "writes output/default-scene.pvd.\n";
   }
@@ -75,6 +77,9 @@ main(int argc, char **argv)
 
       if (argc > 2)
         {
+          std::cerr << "tissue-contact: error: one parameter file expected, "
+                       "got "
+                    << argc - 1 << " arguments\n";
           print_usage(std::cerr);
           return 1;
         }
@@ -87,6 +92,13 @@ main(int argc, char **argv)
       if (arg == "--print-parameters")
         {
           Scene::SceneParameters::print_reference(std::cout);
+          return 0;
+        }
+      const std::string print_option = "--print-parameters=";
+      if (arg.rfind(print_option, 0) == 0)
+        {
+          Scene::SceneParameters::print_reference(
+            std::cout, arg.substr(print_option.size()));
           return 0;
         }
       if (!arg.empty() && arg[0] == '-')
@@ -103,10 +115,17 @@ main(int argc, char **argv)
       if (arg.empty())
         std::cout << "No parameter file given: running the built-in default "
                      "scene (tissue-contact --help)\n";
+      install_interrupt_handlers();
       if (parameters.time_integration.dynamic)
         DynamicSimulation(parameters, std::cout).run();
       else
         StaticSimulation(parameters, std::cout).run();
+    }
+  catch (const Interrupted &e)
+    {
+      std::cout.flush();
+      std::cerr << "tissue-contact: " << e.what() << std::endl;
+      return 128 + e.signal;
     }
   catch (const std::exception &e)
     {

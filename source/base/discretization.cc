@@ -50,6 +50,30 @@ namespace TissueContact
   }
 
 
+  std::vector<std::array<types::global_dof_index, 3>>
+  Discretization::support_point_dofs() const
+  {
+    std::vector<std::array<types::global_dof_index, 3>> result(n_dofs());
+    std::vector<types::global_dof_index>   dofs(fe.n_dofs_per_cell());
+    std::array<types::global_dof_index, 3> at_point;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        // the components of one support point are one base element's
+        // shape function in each of the three copies
+        for (unsigned int k = 0; k < dofs.size(); ++k)
+          {
+            const unsigned int base = fe.system_to_component_index(k).second;
+            for (unsigned int j = 0; j < dofs.size(); ++j)
+              if (fe.system_to_component_index(j).second == base)
+                at_point[fe.system_to_component_index(j).first] = dofs[j];
+            result[dofs[k]] = at_point;
+          }
+      }
+    return result;
+  }
+
+
   Point<3>
   Discretization::mean_support_point() const
   {

@@ -292,7 +292,10 @@ namespace TissueContact
       for_each_pair_contact(
         u,
         K != nullptr,
-        [&](const unsigned int t, const unsigned int k, const PairKernel &d) {
+        [&](const unsigned int t,
+            const unsigned int k,
+            const unsigned int,
+            const PairKernel &d) {
           const auto dofs = pair_dofs(t, k);
           for (unsigned int i = 0; i < 21; ++i)
             R[dofs[i]] += d.gradient[i];
@@ -345,7 +348,7 @@ namespace TissueContact
       // loop, so sums are reproducible
       struct Result
       {
-        unsigned int t = 0, k = 0;
+        unsigned int t = 0, k = 0, pair = 0;
         PairKernel   d;
       };
       struct Copy
@@ -374,8 +377,9 @@ namespace TissueContact
                 method_of(p).kernel(tet, tri, g, p.penalty, with_hessian, r.d);
               if (hit)
                 {
-                  r.t = t;
-                  r.k = k;
+                  r.t    = t;
+                  r.k    = k;
+                  r.pair = &p - pairs.data();
                   ++c.n;
                 }
             });
@@ -384,7 +388,10 @@ namespace TissueContact
           const auto scope =
             time_section(c.n > 0 ? timer : nullptr, "contact: insertion");
           for (unsigned int i = 0; i < c.n; ++i)
-            f(c.results[i].t, c.results[i].k, c.results[i].d);
+            f(c.results[i].t,
+              c.results[i].k,
+              c.results[i].pair,
+              c.results[i].d);
         },
         Copy());
     }
@@ -549,6 +556,44 @@ namespace TissueContact
               }
           });
       return {depth_of.begin(), depth_of.end()};
+    }
+
+
+    std::vector<ContactResult>
+    BodyContactAssembler::results(
+      const Vector<double>      &u,
+      std::vector<Tensor<1, 3>> &surface_force) const
+    {
+      std::vector<ContactResult> result(pairs.size());
+      if (pairs.empty())
+        return result;
+      const std::vector<Point<3>> x = surface.positions(u);
+      for_each_pair_contact(u,
+                            false,
+                            [&](const unsigned int t,
+                                const unsigned int k,
+                                const unsigned int pair,
+                                const PairKernel  &d) {
+                              ContactResult &r = result[pair];
+                              // the triangle's vertices follow the
+                              // tetrahedron's among the 21 coordinates
+                              for (unsigned int a = 0; a < 3; ++a)
+                                for (unsigned int c = 0; c < 3; ++c)
+                                  {
+                                    const double f =
+                                      -d.gradient[12 + 3 * a + c];
+                                    r.force[c] += f;
+                                    surface_force[surface.triangles[t][a]][c] +=
+                                      f;
+                                  }
+                              const PairGeometry g = pair_geometry(x, t, k);
+                              r.area += intersection_area(g.tet, g.tri);
+                              r.energy += d.energy;
+                            });
+      const std::vector<double> largest = pair_penetrations(u);
+      for (unsigned int p = 0; p < pairs.size(); ++p)
+        result[p].max_penetration = largest[p];
+      return result;
     }
 
 

@@ -29,6 +29,11 @@ namespace TissueContact
                 triangles.push_back({face->vertex_index(0),
                                      face->vertex_index(1),
                                      face->vertex_index(2)});
+                const Tensor<1, 3> n =
+                  cross_product_3d(face->vertex(1) - face->vertex(0),
+                                   face->vertex(2) - face->vertex(0));
+                outward.push_back(
+                  n * (face->center() - cell->center()) > 0 ? 1 : -1);
                 triangle_body.push_back(body(cell->material_id()));
               }
         }
@@ -42,6 +47,31 @@ namespace TissueContact
       for (unsigned int v = 0; v < X.size(); ++v)
         x[v] = position(v, u);
       return x;
+    }
+
+
+    void
+    ContactSurface::vertex_areas_and_normals(
+      const Vector<double>      &u,
+      std::vector<double>       &area,
+      std::vector<Tensor<1, 3>> &normal) const
+    {
+      area.assign(X.size(), 0.);
+      normal.assign(X.size(), Tensor<1, 3>());
+      for (unsigned int t = 0; t < triangles.size(); ++t)
+        {
+          const std::array<Point<3>, 3> x = triangle(t, u);
+          const Tensor<1, 3>            a =
+            0.5 * outward[t] * cross_product_3d(x[1] - x[0], x[2] - x[0]);
+          for (const unsigned int v : triangles[t])
+            {
+              area[v] += a.norm() / 3.;
+              normal[v] += a;
+            }
+        }
+      for (auto &n : normal)
+        if (n.norm() > 0.)
+          n /= n.norm();
     }
   } // namespace Contact
 } // namespace TissueContact

@@ -29,8 +29,9 @@ namespace TissueContact
       for (unsigned int t = 0; t < surface.n_triangles(); ++t)
         {
           const std::array<Point<3>, 3> tri = surface.triangle(t, u);
-          for (const auto &o : obstacles)
+          for (unsigned int i = 0; i < obstacles.size(); ++i)
             {
+              const ObstacleContact &o = obstacles[i];
               if (!pushes(o, t))
                 continue;
               bool penetrates = false;
@@ -38,6 +39,7 @@ namespace TissueContact
                 penetrates = penetrates || o.obstacle.penetration(p) > 0.;
               if (penetrates)
                 f(t,
+                  i,
                   ad_derivatives(
                     [&](const auto &T) {
                       return obstacle_energy(o.obstacle, T, o.penalty);
@@ -56,7 +58,9 @@ namespace TissueContact
     {
       for_each_contact(u,
                        K != nullptr,
-                       [&](const unsigned int t, const PairDerivatives &d) {
+                       [&](const unsigned int t,
+                           const unsigned int,
+                           const PairDerivatives &d) {
                          std::array<types::global_dof_index, 9> dofs;
                          for (unsigned int a = 0; a < 3; ++a)
                            for (unsigned int c = 0; c < 3; ++c)
@@ -96,12 +100,60 @@ namespace TissueContact
       Tensor<1, 3> force;
       for_each_contact(u,
                        false,
-                       [&](const unsigned int, const PairDerivatives &d) {
+                       [&](const unsigned int,
+                           const unsigned int,
+                           const PairDerivatives &d) {
                          for (unsigned int a = 0; a < 3; ++a)
                            for (unsigned int c = 0; c < 3; ++c)
                              force[c] -= d.gradient[3 * a + c];
                        });
       return force;
+    }
+
+
+    std::vector<ContactResult>
+    ObstacleAssembler::results(const Vector<double>      &u,
+                               std::vector<Tensor<1, 3>> &surface_force) const
+    {
+      std::vector<ContactResult> result(obstacles.size());
+      for_each_contact(u,
+                       false,
+                       [&](const unsigned int     t,
+                           const unsigned int     o,
+                           const PairDerivatives &d) {
+                         ContactResult &r = result[o];
+                         for (unsigned int a = 0; a < 3; ++a)
+                           for (unsigned int c = 0; c < 3; ++c)
+                             {
+                               r.force[c] -= d.gradient[3 * a + c];
+                               surface_force[surface.triangles[t][a]][c] -=
+                                 d.gradient[3 * a + c];
+                             }
+                         r.area +=
+                           obstacle_contact_area(obstacles[o].obstacle,
+                                                 surface.triangle(t, u));
+                         r.energy += d.energy;
+                         for (const unsigned int v : surface.triangles[t])
+                           r.max_penetration =
+                             std::max(r.max_penetration,
+                                      obstacles[o].obstacle.penetration(
+                                        surface.position(v, u)));
+                       });
+      return result;
+    }
+
+
+    std::vector<double>
+    ObstacleAssembler::vertex_penetrations(const Vector<double> &u) const
+    {
+      std::vector<double> d(surface.X.size(), 0.);
+      for (unsigned int t = 0; t < surface.n_triangles(); ++t)
+        for (const auto &o : obstacles)
+          if (pushes(o, t))
+            for (const unsigned int v : surface.triangles[t])
+              d[v] =
+                std::max(d[v], o.obstacle.penetration(surface.position(v, u)));
+      return d;
     }
 
 

@@ -40,7 +40,8 @@ namespace TissueContact
                << " " << i.linear_iterations;
       else
         screen << std::defaultfloat << "    converged";
-      screen << std::defaultfloat << "\n";
+      // flushed: a log redirected to a file shows every iteration at once
+      screen << std::defaultfloat << std::endl;
 
       csv << i.increment << "," << std::setprecision(10) << i.load_factor << ","
           << i.iteration << "," << std::scientific << std::setprecision(8)
@@ -54,7 +55,7 @@ namespace TissueContact
     ConvergenceLog::cutback(const double load_factor, const std::string &why)
     {
       screen << "  increment to load factor " << std::setprecision(6)
-             << load_factor << " failed: " << why << "\n";
+             << load_factor << " failed: " << why << std::endl;
     }
   } // namespace Output
 } // namespace TissueContact

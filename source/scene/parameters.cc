@@ -3,6 +3,10 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <boost/property_tree/ptree.hpp>
+#include <boost/property_tree/xml_parser.hpp>
+
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -298,6 +302,37 @@ namespace TissueContact
                         print_timing,
                         "Print the wall-clock time summary at the end.",
                         Patterns::Bool());
+      prm.add_parameter("Every n steps",
+                        every_n_steps,
+                        "Write the VTU files of every n-th converged "
+                        "increment, or time step where Time integration/"
+                        "Output interval is 0 (the first and the last "
+                        "state are always written).",
+                        Patterns::Integer(1));
+      prm.add_parameter("Double precision",
+                        double_precision,
+                        "Write the VTU values in Float64 instead of Float32 "
+                        "(files about twice as large; Float32 limits a "
+                        "comparison to 1e-7).",
+                        Patterns::Bool());
+      prm.add_parameter("Length unit",
+                        length_unit,
+                        "The unit of length of the input (e.g. mm), written "
+                        "beside the fields of the VTU files; empty: none. "
+                        "The program itself uses any consistent units.",
+                        Patterns::Anything());
+      prm.add_parameter("Force unit",
+                        force_unit,
+                        "The unit of force of the input (e.g. N); with the "
+                        "length unit it names the stresses' unit "
+                        "(N/mm^2).",
+                        Patterns::Anything());
+      prm.add_parameter("Old results",
+                        old_results,
+                        "What to do with files of an earlier run with the "
+                        "same base name in the output folder: remove them "
+                        "before writing, or refuse to run.",
+                        Patterns::Selection("remove|refuse"));
       prm.leave_subsection();
     }
 
@@ -396,14 +431,120 @@ namespace TissueContact
     }
 
 
+    namespace
+    {
+      /** Undo ParameterHandler's mangling of names in XML: every character
+       * other than a letter or digit is '_' and two hex digits. */
+      std::string
+      demangle(const std::string &s)
+      {
+        std::string out;
+        for (std::size_t i = 0; i < s.size(); ++i)
+          if (s[i] == '_' && i + 2 < s.size())
+            {
+              out +=
+                static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
+              i += 2;
+            }
+          else
+            out += s[i];
+        return out;
+      }
+
+      /** Text for a Markdown table cell: one line, '|' escaped. */
+      std::string
+      cell(std::string s)
+      {
+        for (char &c : s)
+          if (c == '\n' || c == '\t')
+            c = ' ';
+        std::string out;
+        for (const char c : s)
+          out += (c == '|' ? std::string("\\|") : std::string(1, c));
+        const auto first = out.find_first_not_of(' ');
+        return first == std::string::npos ? "" : out.substr(first);
+      }
+
+      /** One table per subsection that holds entries, depth first. */
+      void
+      write_tables(const boost::property_tree::ptree &node,
+                   const std::string                 &path,
+                   std::ostream                      &out)
+      {
+        std::vector<const boost::property_tree::ptree *> entries;
+        std::vector<std::string>                         names;
+        for (const auto &[name, child] : node)
+          if (child.count("value") > 0 && child.count("documentation") > 0)
+            {
+              entries.push_back(&child);
+              names.push_back(demangle(name));
+            }
+        if (!entries.empty())
+          {
+            out << "\n## " << (path.empty() ? "(top level)" : path) << "\n\n"
+                << "| entry | default | allowed values | description |\n"
+                << "| --- | --- | --- | --- |\n";
+            for (unsigned int i = 0; i < entries.size(); ++i)
+              out << "| `" << names[i] << "` | `"
+                  << cell(entries[i]->get<std::string>("default_value"))
+                  << "` | "
+                  << cell(entries[i]->get<std::string>("pattern_description"))
+                  << " | "
+                  << cell(entries[i]->get<std::string>("documentation"))
+                  << " |\n";
+          }
+        for (const auto &[name, child] : node)
+          if (!(child.count("value") > 0 && child.count("documentation") > 0))
+            write_tables(child,
+                         path.empty() ? demangle(name) :
+                                        path + " / " + demangle(name),
+                         out);
+      }
+    } // namespace
+
+
     void
-    SceneParameters::print_reference(std::ostream &out)
+    SceneParameters::print_markdown(ParameterHandler &prm, std::ostream &out)
+    {
+      std::stringstream xml;
+      prm.print_parameters(xml, ParameterHandler::XML);
+      boost::property_tree::ptree tree;
+      boost::property_tree::read_xml(xml, tree);
+      out << "# Parameter reference\n\n"
+          << "Every entry of a scene's parameter file (`prm/*.prm`), with its "
+             "default, the values it accepts and what it does. Numbered "
+             "subsections (`Body 0`, `Dirichlet 0`, `Pair 0`, ...) are shown "
+             "once and repeat with their count. The program uses any "
+             "consistent set of units (e.g. mm, N, MPa = N/mm^2, t/mm^3 for "
+             "the density); `Output/Length unit` and `Force unit` only label "
+             "the output.\n\n"
+          << "Generated by `tissue-contact --print-parameters=markdown` "
+             "(also `=json`, and plain `--print-parameters` for a commented "
+             "parameter file); the test `scene/print_parameters` fails when "
+             "this page differs from what the program prints.\n";
+      write_tables(tree.get_child("ParameterHandler"), "", out);
+    }
+
+
+    void
+    SceneParameters::print_reference(std::ostream      &out,
+                                     const std::string &format)
     {
       SceneParameters p;
       p.resize(1, 1, 1, 1, 1);
       ParameterHandler prm;
       p.declare_parameters(prm);
-      prm.print_parameters(out, ParameterHandler::PRM);
+      if (format == "prm")
+        prm.print_parameters(out, ParameterHandler::PRM);
+      else if (format == "json")
+        prm.print_parameters(out, ParameterHandler::JSON);
+      else if (format == "markdown")
+        print_markdown(prm, out);
+      else
+        AssertThrow(false,
+                    ExcMessage("unknown format '" + format +
+                               "' of --print-parameters: prm, json or "
+                               "markdown"));
     }
 
 
@@ -465,6 +606,11 @@ namespace TissueContact
       std::istringstream in(text);
       prm.parse_input(in, name);
       p.parse_parameters(prm, directory);
+      std::ostringstream effective;
+      effective << "# The effective parameters of " << name
+                << ": every entry, as read or by default\n";
+      prm.print_parameters(effective, ParameterHandler::ShortPRM);
+      p.effective_parameters = effective.str();
       return p;
     }
 
@@ -472,6 +618,10 @@ namespace TissueContact
     SceneParameters
     SceneParameters::from_file(const std::string &filename)
     {
+      AssertThrow(!std::filesystem::is_directory(filename),
+                  ExcMessage("'" + filename +
+                             "' is a folder, not a parameter file: give a "
+                             ".prm file (see prm/)"));
       std::ifstream in(filename);
       AssertThrow(in.good(),
                   ExcMessage("cannot open the parameter file '" + filename +

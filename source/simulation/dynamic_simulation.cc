@@ -1,8 +1,9 @@
 #include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/base/interrupt.h>
 #include <tissue_contact/dynamics/ida_integrator.h>
 #include <tissue_contact/dynamics/mass_matrix.h>
-#include <tissue_contact/output/vtu_writer.h>
 #include <tissue_contact/simulation/dynamic_simulation.h>
+#include <tissue_contact/simulation/result_writer.h>
 
 #include <deal.II/base/timer.h>
 
@@ -117,12 +118,10 @@ namespace TissueContact
                  std::to_string(pair.volume_body);
     for (unsigned int i = 0; i < p.contact.obstacles.size(); ++i)
       columns += ",obstacle_" + std::to_string(i);
-    std::string             csv_name;
-    std::ofstream           csv = open_time_history(columns, csv_name);
-    Output::VtuSeriesWriter vtu(p.output.directory, p.output.base_name);
-    const auto              depth = depth_field();
-    if (p.output.write_vtu)
-      vtu.write(disc, nonlinear_problem.elastic_assembler(), s.u, s.t, depth);
+    ResultWriter  results(nonlinear_problem);
+    std::string   csv_name;
+    std::ofstream csv = open_time_history(columns, csv_name);
+    results.record(0, s.t, s.u, integrator.load_factor(s.t), true);
 
     out << "  step     time         dt           Newton  kinetic energy\n";
     unsigned int   step = 0, cutbacks = 0, iterations = 0;
@@ -165,25 +164,41 @@ namespace TissueContact
             out << std::setw(6) << step << std::scientific
                 << std::setprecision(4) << std::setw(13) << s.t << std::setw(13)
                 << taken << std::setw(6) << integrator.last_iterations << "  "
-                << kinetic << std::defaultfloat << std::setprecision(6)
-                << std::endl;
-            if (p.output.write_vtu && (s.t >= next_output * (1. - 1e-12) ||
-                                       s.t >= ti.end_time * (1. - 1e-12)))
-              {
-                TimerOutput::Scope scope(timer_output, "output");
-                vtu.write(
-                  disc, nonlinear_problem.elastic_assembler(), s.u, s.t, depth);
+                << kinetic << std::defaultfloat << std::setprecision(6);
+            // progress: wall time, and the time left extrapolated linearly
+            // in the simulated time
+            if (p.output.print_timing)
+              out << std::fixed << std::setprecision(1) << "  "
+                  << timer.wall_time() << " s, about "
+                  << timer.wall_time() * (ti.end_time - s.t) / s.t << " s left"
+                  << std::defaultfloat << std::setprecision(6);
+            out << std::endl;
+            {
+              TimerOutput::Scope scope(timer_output, "output");
+              const bool         vtu_due =
+                s.t >= ti.end_time * (1. - 1e-12) ||
+                (ti.output_interval > 0. ? s.t >= next_output * (1. - 1e-12) :
+                                           results.due(step));
+              results.record(step,
+                             s.t,
+                             s.u,
+                             integrator.load_factor(s.t),
+                             vtu_due,
+                             {{"kinetic_energy", kinetic}, {"energy", energy}});
+              if (vtu_due)
                 next_output = s.t + ti.output_interval;
-              }
+            }
           }
       }
     catch (const std::exception &e)
       {
         nonlinear_problem.set_timer(nullptr);
         const std::string kept =
-          p.output.write_vtu ? "; the steps up to t = " + std::to_string(s.t) +
-                                 " are kept in " + vtu.pvd_file() :
-                               "";
+          "; the steps up to t = " + std::to_string(s.t) + " are kept in " +
+          (p.output.write_vtu ? results.pvd_file() + " and " : "") +
+          results.statistics_file();
+        if (const auto *i = dynamic_cast<const Interrupted *>(&e))
+          throw Interrupted(i->signal, kept);
         AssertThrow(false, ExcMessage(error_message(e) + kept));
       }
     nonlinear_problem.set_timer(nullptr);
@@ -193,9 +208,10 @@ namespace TissueContact
               ", " + std::to_string(timer.wall_time()) + " s wall time" :
               std::string())
         << "\n"
-        << "  time history: " << csv_name << "\n";
+        << "  time history: " << csv_name << "\n"
+        << "  statistics: " << results.statistics_file() << "\n";
     if (p.output.write_vtu)
-      out << "  results: " << vtu.pvd_file() << " (open in ParaView)\n";
+      out << "  results: " << results.pvd_file() << " (open in ParaView)\n";
   }
 } // namespace TissueContact
 
@@ -216,11 +232,10 @@ namespace TissueContact
     s.v.reinit(disc.n_dofs());
     s.t = 0.;
 
+    ResultWriter  results(nonlinear_problem);
     std::string   csv_name;
     std::ofstream csv =
       open_time_history("output,time,kinetic_energy", csv_name);
-    Output::VtuSeriesWriter vtu(p.output.directory, p.output.base_name);
-    const auto              depth = depth_field();
     out << "  output   time         kinetic energy\n";
     unsigned int outputs = 0;
     try
@@ -233,25 +248,39 @@ namespace TissueContact
           out << std::setw(8) << outputs << std::scientific
               << std::setprecision(4) << std::setw(13) << o.t << "  " << kinetic
               << std::defaultfloat << std::setprecision(6) << "\n";
+          results.record(outputs,
+                         o.t,
+                         o.u,
+                         ti.ramp_time > 0. ? std::min(1., o.t / ti.ramp_time) :
+                                             1.,
+                         true,
+                         {{"kinetic_energy", kinetic}});
           ++outputs;
-          if (p.output.write_vtu)
-            vtu.write(
-              disc, nonlinear_problem.elastic_assembler(), o.u, o.t, depth);
         });
+      }
+    catch (const Interrupted &i)
+      {
+        throw Interrupted(i.signal,
+                          "; the outputs so far are kept in " +
+                            (p.output.write_vtu ? results.pvd_file() + " and " :
+                                                  std::string()) +
+                            results.statistics_file());
       }
     catch (const std::exception &e)
       {
         AssertThrow(false,
-                    ExcMessage(
-                      "IDA failed: " + error_message(e) +
-                      (p.output.write_vtu ?
-                         "; the outputs so far are kept in " + vtu.pvd_file() :
-                         std::string())));
+                    ExcMessage("IDA failed: " + error_message(e) +
+                               "; the outputs so far are kept in " +
+                               (p.output.write_vtu ?
+                                  results.pvd_file() + " and " :
+                                  std::string()) +
+                               results.statistics_file()));
       }
     out << "Reached t = " << s.t << " (IDA: " << ida.n_jacobian_setups
         << " Jacobian setups)\n"
-        << "  time history: " << csv_name << "\n";
+        << "  time history: " << csv_name << "\n"
+        << "  statistics: " << results.statistics_file() << "\n";
     if (p.output.write_vtu)
-      out << "  results: " << vtu.pvd_file() << " (open in ParaView)\n";
+      out << "  results: " << results.pvd_file() << " (open in ParaView)\n";
   }
 } // namespace TissueContact

@@ -8,6 +8,7 @@
 
 #include <limits>
 #include <numeric>
+#include <set>
 
 namespace TissueContact
 {
@@ -120,6 +121,72 @@ namespace TissueContact
           }
       }
     assembler.use_matrix_pattern(sparsity);
+  }
+
+
+  std::vector<Problem::Reaction>
+  Problem::reactions(const Vector<double> &u, const double load_factor) const
+  {
+    const auto                                       &p = scene.parameters;
+    std::vector<Reaction>                             result;
+    std::map<const Scene::PrescribedMotion *, size_t> group_of;
+    for (unsigned int i = 0; i < p.dirichlet.size(); ++i)
+      {
+        group_of[&p.dirichlet[i].motion] = result.size();
+        result.push_back({"dirichlet" + std::to_string(i) + "_boundary" +
+                            std::to_string(int(p.dirichlet[i].boundary_id)),
+                          {},
+                          {},
+                          {}});
+      }
+    for (const auto &b : p.bodies)
+      if (b.prescribed_rigid())
+        {
+          group_of[&b.rigid_motion] = result.size();
+          result.push_back({"body_" + b.name, {}, {}, {}});
+        }
+    if (result.empty())
+      return result;
+
+    const Vector<double> &x = fe_displacement(u);
+    Vector<double>        R(disc.n_dofs());
+    AssertThrow(assembler.assemble(x, load_factor, R, nullptr),
+                ExcMessage("the reactions were asked for at a state with an "
+                           "inverted element"));
+    if (contact)
+      contact->assemble(x, R, nullptr);
+
+    // each DoF once, in the group of its first condition
+    std::vector<std::pair<const Scene::PrescribedDof *, size_t>> dofs;
+    std::set<types::global_dof_index>                            seen;
+    for (const auto &d : prescribed)
+      if (seen.insert(d.dof).second)
+        dofs.emplace_back(&d, group_of.at(d.motion));
+    const auto point_dofs = disc.support_point_dofs();
+    const auto position   = [&](const Scene::PrescribedDof &d) {
+      const std::array<types::global_dof_index, 3> &own = point_dofs[d.dof];
+      return Point<3>(d.X[0] + x[own[0]],
+                      d.X[1] + x[own[1]],
+                      d.X[2] + x[own[2]]);
+    };
+    std::vector<unsigned int> n(result.size(), 0);
+    for (const auto &[d, g] : dofs)
+      {
+        result[g].centroid += position(*d);
+        ++n[g];
+      }
+    for (unsigned int g = 0; g < result.size(); ++g)
+      if (n[g] > 0)
+        result[g].centroid /= n[g];
+    for (const auto &[d, g] : dofs)
+      {
+        Tensor<1, 3> f;
+        f[d->component] = R[d->dof];
+        result[g].force += f;
+        result[g].moment +=
+          cross_product_3d(position(*d) - result[g].centroid, f);
+      }
+    return result;
   }
 
 

@@ -1,9 +1,12 @@
 #include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/base/interrupt.h>
 #include <tissue_contact/output/convergence_log.h>
-#include <tissue_contact/output/vtu_writer.h>
+#include <tissue_contact/simulation/result_writer.h>
 #include <tissue_contact/simulation/static_simulation.h>
 
-#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
 
 namespace TissueContact
 {
@@ -67,37 +70,48 @@ namespace TissueContact
       out << "  contact: " << contact->n_triangles() << " contact triangles, "
           << p.contact.obstacles.size() << " obstacle(s), "
           << p.contact.pairs.size() << " body pair(s)\n";
+    out.flush();
 
-    std::filesystem::create_directories(p.output.directory);
+    ResultWriter      results(nonlinear_problem);
     const std::string csv =
       p.output.directory + "/" + p.output.base_name + "-convergence.csv";
-    Output::ConvergenceLog  log(out, csv);
-    Output::VtuSeriesWriter vtu(p.output.directory, p.output.base_name);
-
-    // the material depth is written when body contact is declared
-    const auto depth_field = [&]() { return nonlinear_problem.depth_field(); };
+    Output::ConvergenceLog log(out, csv);
 
     Solvers::IncrementalNewtonSolver solver(p.solver);
-    solver.on_iteration = [&](const IterationInfo &i) { log.iteration(i); };
-    solver.on_cutback   = [&](const double lambda, const std::string &why) {
+    solver.on_iteration = [&](const IterationInfo &i) {
+      log.iteration(i);
+      check_interrupt();
+    };
+    solver.on_cutback = [&](const double lambda, const std::string &why) {
       log.cutback(lambda, why);
     };
-    solver.on_increment =
-      [&](const unsigned int, const double lambda, const Vector<double> &u) {
-        if (p.output.write_vtu)
-          {
-            TimerOutput::Scope scope(timer, "output");
-            vtu.write(disc,
-                      assembler,
-                      nonlinear_problem.displacement(u),
-                      lambda,
-                      depth_field());
-          }
-      };
+    solver.on_increment = [&](const unsigned int    increment,
+                              const double          lambda,
+                              const Vector<double> &u) {
+      TimerOutput::Scope scope(timer, "output");
+      const bool         last = lambda >= 1. - 1e-12;
+      results.record(increment,
+                     lambda,
+                     u,
+                     lambda,
+                     results.due(increment) || last,
+                     {{"wall_time", total.wall_time()}});
+      // progress: the time left extrapolated linearly in the load factor
+      if (p.output.print_timing)
+        {
+          std::ostringstream line;
+          line << std::fixed << std::setprecision(1)
+               << "  converged at load factor " << lambda << " after "
+               << total.wall_time() << " s";
+          if (!last)
+            line << "; about " << total.wall_time() * (1. - lambda) / lambda
+                 << " s left";
+          out << line.str() << std::endl;
+        }
+    };
 
     u = 0.;
-    if (p.output.write_vtu)
-      vtu.write(disc, assembler, u, 0., depth_field());
+    results.record(0, 0., u, 0., true, {{"wall_time", total.wall_time()}});
 
     SolveStatistics statistics;
     try
@@ -111,9 +125,11 @@ namespace TissueContact
       {
         nonlinear_problem.set_timer(nullptr);
         const std::string kept =
-          p.output.write_vtu ?
-            "; the converged increments are kept in " + vtu.pvd_file() :
-            "";
+          "; the converged increments are kept in " +
+          (p.output.write_vtu ? results.pvd_file() + " and " : "") +
+          results.statistics_file();
+        if (const auto *i = dynamic_cast<const Interrupted *>(&e))
+          throw Interrupted(i->signal, kept);
         AssertThrow(false, ExcMessage(error_message(e) + kept));
       }
 
@@ -156,8 +172,10 @@ namespace TissueContact
             << rigid->translation(u, b) << ", rotated by "
             << rigid->rotation_vector(u, b).norm() * 180. / M_PI
             << " degrees\n";
+    StepResults(nonlinear_problem, u, 1.).print(out);
+    out << "  statistics: " << results.statistics_file() << "\n";
     if (p.output.write_vtu)
-      out << "  results: " << vtu.pvd_file() << " (open in ParaView)\n";
+      out << "  results: " << results.pvd_file() << " (open in ParaView)\n";
     times          = timer.get_summary_data(TimerOutput::total_wall_time);
     times["total"] = total.wall_time();
     return statistics;

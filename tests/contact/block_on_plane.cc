@@ -6,11 +6,21 @@
 // (for a uniform pressure, p = eps d). Also a large sphere as the obstacle,
 // and Newton's convergence with contact in the last increment (the ratios
 // r_k+1 / r_k^2 stay bounded: quadratic once the contact set has settled).
+// The run's results (StepResults, the statistics file): the contact traction
+// integrated over the contact surface equals the load, the normal pressure
+// integrated nearly (the bottom's normals tilt where it bulges), the contact
+// area is the bottom face, widened by the bulge; with the block pressed down
+// by its clamped top face instead, the top's vertical reaction is minus the
+// contact force, the horizontal reactions balance, and the last row of
+// <base>-statistics.csv holds the same numbers.
 
 #include "../tests.h"
 
 #include <tissue_contact/simulation/static_simulation.h>
+#include <tissue_contact/simulation/step_results.h>
 
+#include <fstream>
+#include <map>
 #include <sstream>
 
 using namespace dealii;
@@ -70,6 +80,51 @@ end
 )";
   }
 
+  // sum_a t_a A_a (the traction integrated) and sum_a p_a A_a (the normal
+  // pressure integrated) over the vertices
+  void
+  print_integrated_pressure(const StepResults &r, const double load)
+  {
+    const auto  &c = r.contact;
+    double       P = 0.;
+    Tensor<1, 3> T;
+    for (unsigned int v = 0; v < c.area.size(); ++v)
+      {
+        P += c.pressure[v] * c.area[v];
+        T += c.traction[v] * c.area[v];
+      }
+    const auto &obstacle = c.interactions[0];
+    deallog << "  integrated contact traction z / load - 1 "
+            << error_bound(std::abs(T[2] / load - 1.), -8)
+            << ", integrated traction - contact force "
+            << error_bound((T - obstacle.force).norm() / load, -12)
+            << ", integrated normal pressure / load - 1 "
+            << std::setprecision(2) << P / load - 1. << std::setprecision(6)
+            << ", contact area " << obstacle.area << ", largest penetration "
+            << std::setprecision(3) << obstacle.max_penetration
+            << std::setprecision(6) << std::endl;
+  }
+
+  // the last row of a CSV file, by column name
+  std::map<std::string, double>
+  last_row(const std::string &file)
+  {
+    std::ifstream in(file);
+    std::string   header, line, last, cell;
+    std::getline(in, header);
+    while (std::getline(in, line))
+      last = line;
+    std::istringstream            h(header), l(last);
+    std::map<std::string, double> row;
+    while (std::getline(h, cell, ','))
+      {
+        std::string value;
+        std::getline(l, value, ',');
+        row[cell] = std::stod(value);
+      }
+    return row;
+  }
+
   // residuals of the last increment, from the screen log
   std::vector<double>
   last_increment_residuals(const std::string &log)
@@ -118,6 +173,8 @@ main(int argc, char **argv)
               << stats.newton_iterations << std::endl;
       if (eps == "1e3")
         {
+          print_integrated_pressure(
+            StepResults(sim.problem(), sim.solution(), 1.), load);
           const auto r = last_increment_residuals(log.str());
           deallog << "  last increment, residuals:";
           for (const double v : r)
@@ -146,4 +203,51 @@ main(int argc, char **argv)
           << sim.problem().contact_assembler()->max_obstacle_penetration(
                sim.solution())
           << std::setprecision(6) << std::endl;
+
+  // pressed by its clamped top face, 0.02 down, instead of a traction
+  {
+    std::string text =
+      scene("    set Type = plane\n    set Penalty factor = 1e3");
+    const std::string traction = "  set Number of tractions = 1\n";
+    text.replace(text.find(traction), traction.size(), "");
+    text.replace(text.find("  subsection Traction 0"),
+                 std::string(
+                   "  subsection Traction 0\n    set Boundary id = 5\n"
+                   "    set Traction    = 0, 0, -10\n  end\n")
+                   .size(),
+                 "");
+    text.replace(text.find("Number of Dirichlet conditions = 2"),
+                 std::string("Number of Dirichlet conditions = 2").size(),
+                 "Number of Dirichlet conditions = 3\n"
+                 "  subsection Dirichlet 2\n    set Boundary id = 5\n"
+                 "    set Translation = 0, 0, -0.02\n  end");
+    text.replace(text.find("set Directory    = ."),
+                 std::string("set Directory    = .").size(),
+                 "set Directory    = .\n  set Base name = pressed");
+    std::ostringstream log;
+    StaticSimulation   sim(Scene::SceneParameters::from_string(text), log);
+    sim.run();
+    const StepResults  r(sim.problem(), sim.solution(), 1.);
+    const Tensor<1, 3> F   = r.contact.interactions[0].force;
+    const Tensor<1, 3> top = r.reactions[2].force;
+    const Tensor<1, 3> sum =
+      top + F + r.reactions[0].force + r.reactions[1].force;
+    deallog << "pressed by the clamped top face: contact force z " << F[2]
+            << ", " << r.reactions[2].name << " z + contact force z "
+            << error_bound(std::abs(top[2] + F[2]) / F[2], -8)
+            << ", symmetry reactions x " << r.reactions[0].force[0] << " y "
+            << r.reactions[1].force[1] << ", sum of all forces "
+            << error_bound(sum.norm() / F[2], -8) << std::endl;
+    print_integrated_pressure(r, F[2]);
+    const auto row = last_row("pressed-statistics.csv");
+    deallog << "  statistics file, last row: load factor "
+            << row.at("load_factor") << ", obstacle0_plane_Fz - contact force "
+            << error_bound(std::abs(row.at("obstacle0_plane_Fz") - F[2]) / F[2],
+                           -14)
+            << ", dirichlet2_boundary5_Fz + contact force "
+            << error_bound(std::abs(row.at("dirichlet2_boundary5_Fz") + F[2]) /
+                             F[2],
+                           -8)
+            << ", columns " << row.size() << std::endl;
+  }
 }

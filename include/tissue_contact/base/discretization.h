@@ -9,6 +9,9 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <array>
+#include <vector>
+
 namespace TissueContact
 {
   using namespace dealii;
@@ -55,6 +58,10 @@ namespace TissueContact
     /** The displacement component (0, 1, 2) of every DoF. */
     std::vector<unsigned int>
     dof_components() const;
+
+    /** For every DoF, the three DoFs (x, y, z) at its support point. */
+    std::vector<std::array<types::global_dof_index, 3>>
+    support_point_dofs() const;
 
     /** The mean @f$\bar X@f$ of the support points of all DoFs. */
     Point<3>

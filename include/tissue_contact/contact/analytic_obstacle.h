@@ -52,22 +52,20 @@ namespace TissueContact
     };
 
     /**
-     * The penalty energy of a boundary triangle against an obstacle,
-     * @f$W = \frac{\varepsilon_p}{2}\int_{T,\,d_h>0} d_h^2\,da@f$, with
-     * @f$d_h@f$ the linear interpolant of the vertex penetrations (exact for
-     * the plane, second-order accurate for the sphere): the triangle is
-     * clipped by @f$d_h \ge 0@f$ and integral_of_square() integrates.
+     * The part of a boundary triangle on the obstacle's side, where the
+     * linear interpolant @f$d_h@f$ of the vertex penetrations is
+     * non-negative: the clipped polygon's vertices @p x and their
+     * @f$d_h@f$ values @p d; returns their number (0 if fewer than 3).
      */
     template <typename Number>
-    Number
-    obstacle_energy(const AnalyticObstacle                &obstacle,
-                    const std::array<Point<3, Number>, 3> &tri,
-                    const double                           eps_p)
+    unsigned int
+    penetrating_part(const AnalyticObstacle                &obstacle,
+                     const std::array<Point<3, Number>, 3> &tri,
+                     std::array<Point<3, Number>, 4>       &x,
+                     std::array<Number, 4>                 &d)
     {
-      using Traits = Differentiation::AD::ADNumberTraits<Number>;
-      std::array<Point<3, Number>, 4> x;
-      std::array<Number, 4>           d;
-      unsigned int                    n = 0;
+      using Traits   = Differentiation::AD::ADNumberTraits<Number>;
+      unsigned int n = 0;
       for (unsigned int k = 0; k < 3; ++k)
         {
           const Point<3, Number> &p = tri[k], &q = tri[(k + 1) % 3];
@@ -87,9 +85,44 @@ namespace TissueContact
               d[n++]         = Number(0.);
             }
         }
-      if (n < 3)
+      return n < 3 ? 0 : n;
+    }
+
+    /**
+     * The penalty energy of a boundary triangle against an obstacle,
+     * @f$W = \frac{\varepsilon_p}{2}\int_{T,\,d_h>0} d_h^2\,da@f$, with
+     * @f$d_h@f$ the linear interpolant of the vertex penetrations (exact for
+     * the plane, second-order accurate for the sphere): the triangle is
+     * clipped by @f$d_h \ge 0@f$ (penetrating_part()) and
+     * integral_of_square() integrates.
+     */
+    template <typename Number>
+    Number
+    obstacle_energy(const AnalyticObstacle                &obstacle,
+                    const std::array<Point<3, Number>, 3> &tri,
+                    const double                           eps_p)
+    {
+      std::array<Point<3, Number>, 4> x;
+      std::array<Number, 4>           d;
+      const unsigned int              n = penetrating_part(obstacle, tri, x, d);
+      if (n == 0)
         return Number(0.);
       return 0.5 * eps_p * integral_of_square(x, d, n, unit_normal(tri));
+    }
+
+    /** The area of penetrating_part(): where the penalty of
+     * obstacle_energy() acts. */
+    inline double
+    obstacle_contact_area(const AnalyticObstacle        &obstacle,
+                          const std::array<Point<3>, 3> &tri)
+    {
+      std::array<Point<3>, 4> x;
+      std::array<double, 4>   d;
+      const unsigned int      n    = penetrating_part(obstacle, tri, x, d);
+      double                  area = 0.;
+      for (unsigned int k = 1; k + 1 < n; ++k)
+        area += 0.5 * cross_product_3d(x[k] - x[0], x[k + 1] - x[0]).norm();
+      return area;
     }
 
   } // namespace Contact

@@ -70,6 +70,15 @@ namespace TissueContact
                     const double            margin,
                     DynamicSparsityPattern &dsp) const override;
 
+      /** Per declared pair: the force on its surface body (the triangle
+       * vertices' share of @f$-\partial W/\partial x@f$), the area of its
+       * triangles inside the volume body (the intersection polygons of the
+       * pairs with energy), its largest penetration (pair_penetrations())
+       * and its energy. */
+      std::vector<ContactResult>
+      results(const Vector<double>      &u,
+              std::vector<Tensor<1, 3>> &surface_force) const override;
+
       /** Whether @p pattern holds the couplings of every pair with nonzero
        * energy at @p u. */
       bool
@@ -266,8 +275,9 @@ namespace TissueContact
       std::array<types::global_dof_index, 21>
       pair_dofs(const unsigned int t, const unsigned int k) const;
 
-      /** Call @p f(t, k, derivatives) for every intersecting pair of a
-       * contact triangle t and a tetrahedron k with nonzero energy. */
+      /** Call @p f(t, k, pair, derivatives) for every intersecting pair of
+       * a contact triangle t and a tetrahedron k with nonzero energy, pair
+       * the index of its body pair in pairs. */
       template <typename F>
       void
       for_each_pair_contact(const Vector<double> &u,

@@ -52,6 +52,32 @@ namespace TissueContact
       has_couplings(const Vector<double>  &u,
                     const SparsityPattern &pattern) const override;
 
+      /** The result of each interaction: the body pairs in their declared
+       * order, then the obstacles (ContactInteraction::results()). */
+      std::vector<ContactResult>
+      results(const Vector<double>      &u,
+              std::vector<Tensor<1, 3>> &surface_force) const override;
+
+      /**
+       * What the output shows of contact at @p u, per mesh vertex
+       * (doc/theory/05-contact.md, sec. 9): the contact traction
+       * @f$t_a = f_a/A_a@f$ (the force @f$f_a@f$ the vertex receives as a
+       * vertex of contact triangles over its tributary area @f$A_a@f$), the
+       * contact pressure @f$p_a = -t_a\cdot n_a@f$ (positive in
+       * compression, @f$n_a@f$ the outward normal) and the penetration,
+       * the larger of the depth it reaches inside a paired body and inside
+       * an obstacle; so @f$\sum_a t_a A_a@f$ is the total contact force on
+       * the surface sides. With the results of every interaction.
+       */
+      struct SurfaceState
+      {
+        std::vector<ContactResult> interactions;
+        std::vector<Tensor<1, 3>>  traction;
+        std::vector<double>        pressure, penetration, area;
+      };
+      SurfaceState
+      surface_state(const Vector<double> &u) const;
+
       /** The total penalty energy. */
       double
       energy(const Vector<double> &u) const;
@@ -60,6 +86,13 @@ namespace TissueContact
        * insertion in @p timer (null: not timed). */
       void
       set_timer(TimerOutput *timer) override;
+
+      /** The contact triangles. */
+      const ContactSurface &
+      contact_surface() const
+      {
+        return surface;
+      }
 
       /** Number of contact triangles. */
       unsigned int

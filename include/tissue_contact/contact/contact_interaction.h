@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/tensor.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
@@ -13,6 +14,25 @@ namespace TissueContact
   namespace Contact
   {
     using namespace dealii;
+
+    /**
+     * What one declared interaction (a body pair or an obstacle) transmits
+     * at a state (doc/theory/05-contact.md, sec. 9): the contact force on
+     * its surface side, @f$F = -\sum_{a} \partial W/\partial x_a@f$ over the
+     * vertices of its contact triangles (for a body pair the volume body
+     * receives @f$-F@f$; for self-contact F is the force the triangles
+     * receive from the body they enter), the contact area (the part of the
+     * contact triangles where the penalty acts: inside the volume body, or
+     * on the obstacle's side of its surface), the largest penetration and
+     * the penalty energy.
+     */
+    struct ContactResult
+    {
+      Tensor<1, 3> force;
+      double       area            = 0.;
+      double       max_penetration = 0.;
+      double       energy          = 0.;
+    };
 
     /**
      * What the problem needs of one kind of contact (doc/theory/05-contact.md,
@@ -38,6 +58,14 @@ namespace TissueContact
       /** The penalty energy of each declared interaction at @p u. */
       virtual std::vector<double>
       energies(const Vector<double> &u) const = 0;
+
+      /** The result of each declared interaction at @p u (in the order of
+       * energies()), and in @p surface_force (one entry per mesh vertex,
+       * sized by the caller) the contact force each vertex of a contact
+       * triangle receives as a triangle vertex, added. */
+      virtual std::vector<ContactResult>
+      results(const Vector<double>      &u,
+              std::vector<Tensor<1, 3>> &surface_force) const = 0;
 
       /** Add to @p dsp the couplings the tangent may have at @p u (with a
        * search margin @p margin); none by default. */

@@ -43,6 +43,9 @@ namespace TissueContact
       /** The body of the cell each triangle bounds (its material id, or
        * the body several material ids form). */
       std::vector<types::material_id> triangle_body;
+      /** +1 if the vertex order of a triangle turns its normal
+       * @f$(x_1-x_0)\times(x_2-x_0)@f$ out of its cell, else -1. */
+      std::vector<signed char> outward;
       /** Reference position of every vertex of the mesh. */
       std::vector<Point<3>> X;
       /** The three displacement DoFs of every vertex. */
@@ -61,6 +64,15 @@ namespace TissueContact
       std::vector<Point<3>>
       positions(const Vector<double> &u) const;
 
+      /** At @p u, for every vertex of the mesh: its tributary contact area
+       * @f$A_a@f$, a third of the current area of every contact triangle
+       * it is a vertex of, and its outward unit normal @f$n_a@f$, the
+       * normalized sum of those triangles' area vectors (both zero off
+       * the contact surfaces). */
+      void
+      vertex_areas_and_normals(const Vector<double>      &u,
+                               std::vector<double>       &area,
+                               std::vector<Tensor<1, 3>> &normal) const;
       /** Current positions of the vertices of triangle @p t. */
       std::array<Point<3>, 3>
       triangle(const unsigned int t, const Vector<double> &u) const

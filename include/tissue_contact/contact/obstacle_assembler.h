@@ -38,10 +38,22 @@ namespace TissueContact
       std::vector<double>
       energies(const Vector<double> &u) const override;
 
+      /** Per obstacle: the force on the bodies it pushes, the area of
+       * their triangles' penetrating parts (obstacle_contact_area()), the
+       * largest vertex penetration and the energy. */
+      std::vector<ContactResult>
+      results(const Vector<double>      &u,
+              std::vector<Tensor<1, 3>> &surface_force) const override;
+
       /** Total force the obstacles exert on the bodies,
        * @f$-\sum_a \partial W/\partial x_a@f$. */
       Tensor<1, 3>
       force(const Vector<double> &u) const;
+
+      /** Per mesh vertex: the largest penetration into an obstacle that
+       * pushes a contact triangle of the vertex (0 elsewhere). */
+      std::vector<double>
+      vertex_penetrations(const Vector<double> &u) const;
 
       /** Largest penetration of a contact vertex into an obstacle. */
       double
@@ -55,8 +67,8 @@ namespace TissueContact
       bool
       pushes(const ObstacleContact &o, const unsigned int t) const;
 
-      /** Call @p f(t, derivatives) for every triangle and obstacle in
-       * contact. */
+      /** Call @p f(t, o, derivatives) for every triangle t and obstacle
+       * obstacles[o] in contact. */
       template <typename F>
       void
       for_each_contact(const Vector<double> &u,

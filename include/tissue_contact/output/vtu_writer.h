@@ -2,9 +2,11 @@
 
 #include <tissue_contact/base/discretization.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
+#include <tissue_contact/output/vtu_file.h>
 
 #include <deal.II/lac/vector.h>
 
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,37 +17,90 @@ namespace TissueContact
   {
     using namespace dealii;
 
+    /** A field given at every vertex of the mesh (@p n_components values
+     * per vertex, interleaved), such as the material depth or the contact
+     * traction. */
+    struct VertexField
+    {
+      std::string         name;
+      unsigned int        n_components = 1;
+      std::vector<double> values;
+      /** "length" or "stress" (the units of Options), or empty. */
+      std::string quantity;
+    };
+
     /**
-     * Writes one VTU file per converged state, <base>-NNNN.vtu, and rewrites
-     * the ParaView series <base>.pvd after each, so a run that stops keeps
-     * a readable series. Fields: displacement (point data, P2 written with
-     * subdivided cells), material id, J, Cauchy stress (6 components), von
-     * Mises stress and strain-energy density (cell averages), and, when
-     * given, the material depth of contact (per vertex, linear). The PVD
-     * "timestep" is the load factor.
+     * The ParaView series of a run (doc/users/output.md): per written state
+     * <base>-NNNN.vtu, the connected mesh (shared points: the vertices, and
+     * for P2 the edge midpoints of quadratic tetrahedra) in the reference
+     * configuration with the displacement as point data (apply "Warp By
+     * Vector"), the per-cell quantities as cell data (material id, J, the
+     * Cauchy stress as a symmetric tensor, von Mises stress, strain-energy
+     * density) and the vertex fields given; when contact surfaces are set,
+     * also <base>-surface-NNNN.vtu, their triangles with the displacement
+     * and the vertex fields. <base>.pvd (and <base>-surface.pvd) list the
+     * states written, with the load factor or time as "timestep". Every
+     * file is written under a temporary name and renamed, so a run that
+     * stops at any moment leaves complete files and a series that lists
+     * only them.
      */
     class VtuSeriesWriter
     {
     public:
-      VtuSeriesWriter(const std::string &directory,
-                      const std::string &base_name);
+      struct Options
+      {
+        /** Values in Float64 instead of Float32. */
+        bool double_precision = false;
+        /** Units written beside the fields (empty: none). */
+        std::string length_unit, stress_unit;
+      };
+
+      VtuSeriesWriter(const Discretization &disc,
+                      const std::string    &directory,
+                      const std::string    &base_name,
+                      const Options        &options);
+
+      /** Also write the surface files, of these triangles (mesh vertex
+       * indices) with their body numbers. */
+      void
+      set_surface(const std::vector<std::array<unsigned int, 3>> &triangles,
+                  const std::vector<types::material_id>          &body);
 
       /** Write the state @p u at load factor (or time) @p time; returns the
-       * file name written. */
+       * volume file's name. */
       std::string
-      write(const Discretization               &disc,
-            const Elasticity::ElasticAssembler &assembler,
+      write(const Elasticity::ElasticAssembler &assembler,
             const Vector<double>               &u,
             const double                        time,
-            const std::vector<double>          *vertex_depth = nullptr);
+            const std::vector<VertexField>     &vertex_fields = {});
 
       /** Path of the PVD file. */
       std::string
       pvd_file() const;
 
+      /** The number of states written. */
+      unsigned int
+      n_written() const
+      {
+        return records.size();
+      }
+
     private:
-      const std::string                           directory, base_name;
-      std::vector<std::pair<double, std::string>> records;
+      const Discretization &disc;
+      const std::string     directory, base_name;
+      const Options         options;
+      VtuMesh               volume, surface;
+      /** The three DoFs of each point of the volume mesh. */
+      std::vector<std::array<types::global_dof_index, 3>> point_dofs;
+      /** Each point's two mesh vertices (equal for a vertex point). */
+      std::vector<std::array<unsigned int, 2>> point_vertices;
+      /** The mesh vertex of each point of the surface mesh. */
+      std::vector<unsigned int>                   surface_vertices;
+      std::vector<double>                         surface_body;
+      std::vector<std::pair<double, std::string>> records, surface_records;
+
+      std::string
+      units(const std::string &quantity) const;
     };
   } // namespace Output
 } // namespace TissueContact

@@ -106,10 +106,14 @@ namespace TissueContact
     /** prm subsection "Output". */
     struct OutputParameters
     {
-      std::string directory    = "output";
-      std::string base_name    = "solution";
-      bool        write_vtu    = true;
-      bool        print_timing = true;
+      std::string  directory        = "output";
+      std::string  base_name        = "solution";
+      bool         write_vtu        = true;
+      bool         print_timing     = true;
+      unsigned int every_n_steps    = 1;
+      bool         double_precision = false;
+      std::string  length_unit, force_unit;
+      std::string  old_results = "remove";
 
       /** Enter "Output" and bind its entries to this object. */
       void
@@ -124,6 +128,11 @@ namespace TissueContact
      */
     struct SceneParameters
     {
+      /** Every entry with the value it has after parsing (read or
+       * default), as a parameter file; written to the output folder at the
+       * start of a run. */
+      std::string effective_parameters;
+
       MeshParameters                               mesh;
       unsigned int                                 degree = 1;
       std::vector<BodyParameters>                  bodies;
@@ -156,9 +165,18 @@ namespace TissueContact
       declare_parameters(ParameterHandler &prm);
 
       /** The parameter reference: every entry, with one subsection of each
-       * kind, as `tissue-contact --print-parameters` prints it. */
+       * kind, as `tissue-contact --print-parameters[=FORMAT]` prints it:
+       * @p format "prm" (a parameter file with every entry documented),
+       * "json" (ParameterHandler's JSON: value, default, documentation,
+       * pattern) or "markdown" (doc/users/parameters.md: one table per
+       * subsection with entry, default, allowed values and description).
+       * Throws for another format. */
       static void
-      print_reference(std::ostream &out);
+      print_reference(std::ostream &out, const std::string &format = "prm");
+
+      /** The entries declared in @p prm as the Markdown reference page. */
+      static void
+      print_markdown(ParameterHandler &prm, std::ostream &out);
 
       /** Read a prm file. Relative paths in it are taken relative to the
        * file's folder. */

@@ -90,6 +90,34 @@ namespace TissueContact
      * the vertex; 0 without body pairs. */
     double
     max_relative_penetration(const Vector<double> &u) const;
+    /**
+     * The support reaction of one group of prescribed DoFs (a Dirichlet
+     * condition, or a body with a prescribed rigid motion): the force
+     * @f$F = \sum_i R_i e_{c_i}@f$ the support exerts on the body, R the
+     * residual @f$f_{int} + \partial W_c/\partial u - \lambda f_{ext}@f$
+     * at the group's DoFs (at equilibrium it balances the rest), and its
+     * moment @f$M = \sum_i (x_i - c) \times R_i e_{c_i}@f$ about the
+     * group's current centroid c (doc/theory/02-weak-form-and-linearization.md,
+     * sec. 2.5).
+     */
+    struct Reaction
+    {
+      std::string  name;
+      Tensor<1, 3> force, moment;
+      Point<3>     centroid;
+    };
+    /** The reaction of every Dirichlet condition (in the declared order,
+     * named "dirichlet<i>_boundary<id>"), then of every body with a
+     * prescribed rigid motion ("body_<name>"), at the state @p u and load
+     * factor @p load_factor. A DoF in two conditions counts for the first. */
+    std::vector<Reaction>
+    reactions(const Vector<double> &u, const double load_factor) const;
+    /** The strain energy of @p u (no load's work). */
+    double
+    strain_energy(const Vector<double> &u) const
+    {
+      return assembler.energy(fe_displacement(u), 0.);
+    }
     /** Number of prescribed DoFs. */
     std::size_t
     n_prescribed() const

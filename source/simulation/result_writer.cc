@@ -1,0 +1,157 @@
+#include <tissue_contact/base/interrupt.h>
+#include <tissue_contact/simulation/result_writer.h>
+
+#include <filesystem>
+#include <regex>
+
+namespace TissueContact
+{
+  void
+  clear_old_results(const std::string &directory,
+                    const std::string &base_name,
+                    const bool         refuse)
+  {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    fs::create_directories(directory, error);
+    AssertThrow(!error,
+                ExcMessage("cannot create the output folder '" + directory +
+                           "': " + error.message()));
+    // the base name as a literal inside the pattern
+    const std::string literal =
+      std::regex_replace(base_name,
+                         std::regex(R"([.^$|()\[\]{}*+?\\])"),
+                         R"(\$&)");
+    const std::regex      ours(literal +
+                          R"((-surface)?(-[0-9]+\.vtu|\.pvd)(\.partial)?|)" +
+                          literal + R"(-(convergence|statistics|time)\.csv|)" +
+                          literal + R"(-parameters\.prm)");
+    std::vector<fs::path> old;
+    for (const auto &entry : fs::directory_iterator(directory))
+      if (entry.is_regular_file() &&
+          std::regex_match(entry.path().filename().string(), ours))
+        old.push_back(entry.path());
+    if (old.empty())
+      return;
+    AssertThrow(!refuse,
+                ExcMessage("the output folder '" + directory +
+                           "' holds results of an earlier run with the base "
+                           "name '" +
+                           base_name + "' (" + old.front().filename().string() +
+                           " and " + std::to_string(old.size() - 1) +
+                           " more): move them, choose another Output/Base "
+                           "name or Directory, or set Output/Old results = "
+                           "remove"));
+    for (const auto &f : old)
+      {
+        fs::remove(f, error);
+        AssertThrow(!error,
+                    ExcMessage("cannot remove the earlier run's file '" +
+                               f.string() + "': " + error.message()));
+      }
+  }
+
+
+  namespace
+  {
+    /** Creates the folder (and clears it) before the files are opened. */
+    std::string
+    prepared_statistics_path(const Problem &problem)
+    {
+      const auto &o = problem.get_scene().parameters.output;
+      clear_old_results(o.directory, o.base_name, o.old_results == "refuse");
+      const std::string &effective =
+        problem.get_scene().parameters.effective_parameters;
+      if (!effective.empty())
+        Output::write_file_atomically(o.directory + "/" + o.base_name +
+                                        "-parameters.prm",
+                                      effective);
+      return o.directory + "/" + o.base_name + "-statistics.csv";
+    }
+  } // namespace
+
+
+  ResultWriter::ResultWriter(const Problem &problem)
+    : problem(problem)
+    , statistics(prepared_statistics_path(problem))
+  {
+    const auto &o = problem.get_scene().parameters.output;
+    if (!o.write_vtu)
+      return;
+    Output::VtuSeriesWriter::Options options;
+    options.double_precision = o.double_precision;
+    options.length_unit      = o.length_unit;
+    if (!o.force_unit.empty() && !o.length_unit.empty())
+      options.stress_unit = o.force_unit + "/" + o.length_unit + "^2";
+    vtu = std::make_unique<Output::VtuSeriesWriter>(problem.discretization(),
+                                                    o.directory,
+                                                    o.base_name,
+                                                    options);
+    if (const auto *contact = problem.contact_assembler())
+      vtu->set_surface(contact->contact_surface().triangles,
+                       contact->contact_surface().triangle_body);
+  }
+
+
+  bool
+  ResultWriter::due(const unsigned int step) const
+  {
+    return vtu &&
+           step % problem.get_scene().parameters.output.every_n_steps == 0;
+  }
+
+
+  std::string
+  ResultWriter::pvd_file() const
+  {
+    return vtu ? vtu->pvd_file() : std::string();
+  }
+
+
+  StepResults
+  ResultWriter::record(const unsigned int    step,
+                       const double          time,
+                       const Vector<double> &u,
+                       const double          load_factor,
+                       const bool            write_vtu,
+                       const std::vector<std::pair<std::string, double>> &extra)
+  {
+    StepResults results(problem, u, load_factor);
+    std::vector<std::pair<std::string, double>> row = {
+      {"step", step},
+      {problem.get_scene().parameters.time_integration.dynamic ? "time" :
+                                                                 "load_factor",
+       time}};
+    row.insert(row.end(), extra.begin(), extra.end());
+    const auto columns = results.columns();
+    row.insert(row.end(), columns.begin(), columns.end());
+    statistics.write_row(row);
+
+    if (write_vtu && vtu)
+      {
+        std::vector<Output::VertexField> fields;
+        if (const auto *depth = problem.depth_field())
+          fields.push_back({"material_depth", 1, *depth, "length"});
+        if (problem.contact_assembler())
+          {
+            const auto         &c = results.contact;
+            Output::VertexField traction{"contact_traction", 3, {}, "stress"};
+            traction.values.reserve(3 * c.traction.size());
+            for (const auto &t : c.traction)
+              for (unsigned int d = 0; d < 3; ++d)
+                traction.values.push_back(t[d]);
+            fields.push_back(traction);
+            fields.push_back({"contact_pressure", 1, c.pressure, "stress"});
+            fields.push_back({"penetration", 1, c.penetration, "length"});
+          }
+        vtu->write(problem.elastic_assembler(),
+                   problem.displacement(u),
+                   time,
+                   fields);
+        last_written = time;
+      }
+    // a signal received meanwhile stops the run here, every file complete
+    check_interrupt();
+    return results;
+  }
+} // namespace TissueContact
