@@ -539,17 +539,32 @@ namespace TissueContact
           [&](const unsigned int t,
               const unsigned int k,
               const BodyContact &p) {
-            const std::array<Point<3>, 4> tet = {
-              {x[tets[k][0]], x[tets[k][1]], x[tets[k][2]], x[tets[k][3]]}};
+            // zero depth at the four vertices: zero everywhere inside
+            if (depth[tets[k][0]] == 0. && depth[tets[k][1]] == 0. &&
+                depth[tets[k][2]] == 0. && depth[tets[k][3]] == 0.)
+              return;
+            const Point<3>    &x0 = x[tets[k][0]];
+            const Tensor<1, 3> a = x[tets[k][1]] - x0, b = x[tets[k][2]] - x0,
+                               c  = x[tets[k][3]] - x0;
+            const Tensor<1, 3> bc = cross_product_3d(b, c);
+            const double       V  = a * bc;
+            if (!(std::abs(V) > 0.))
+              return;
             for (const unsigned int v : surface.triangles[t])
               {
-                const std::array<Point<3>, 3> point   = {{x[v], x[v], x[v]}};
-                const auto                    polygon = intersect(tet, point);
-                if (polygon.n_vertices == 0)
+                // the barycentric coordinates of the vertex in the
+                // tetrahedron; inside (to rounding) if none is negative
+                const Tensor<1, 3>    r = x[v] - x0;
+                std::array<double, 4> lambda;
+                lambda[1] = r * bc / V;
+                lambda[2] = a * cross_product_3d(r, c) / V;
+                lambda[3] = a * cross_product_3d(b, r) / V;
+                lambda[0] = 1. - lambda[1] - lambda[2] - lambda[3];
+                if (*std::min_element(lambda.begin(), lambda.end()) < -1e-12)
                   continue;
                 double g = 0.;
                 for (unsigned int j = 0; j < 4; ++j)
-                  g += polygon.vertex[0].lambda[j] * depth[tets[k][j]];
+                  g += std::max(lambda[j], 0.) * depth[tets[k][j]];
                 depth_of[v]      = std::max(depth_of[v], g);
                 double &pair_max = per_pair[&p - pairs.data()];
                 pair_max         = std::max(pair_max, g);
@@ -560,9 +575,9 @@ namespace TissueContact
 
 
     std::vector<ContactResult>
-    BodyContactAssembler::results(
-      const Vector<double>      &u,
-      std::vector<Tensor<1, 3>> &surface_force) const
+    BodyContactAssembler::results(const Vector<double>      &u,
+                                  std::vector<Tensor<1, 3>> &surface_force,
+                                  std::vector<double>       &penetration) const
     {
       std::vector<ContactResult> result(pairs.size());
       if (pairs.empty())
@@ -590,7 +605,9 @@ namespace TissueContact
                               r.area += intersection_area(g.tet, g.tri);
                               r.energy += d.energy;
                             });
-      const std::vector<double> largest = pair_penetrations(u);
+      std::vector<double> largest;
+      for (const auto &[v, d] : penetrations(u, largest))
+        penetration[v] = std::max(penetration[v], d);
       for (unsigned int p = 0; p < pairs.size(); ++p)
         result[p].max_penetration = largest[p];
       return result;

@@ -55,12 +55,14 @@ namespace TissueContact
 
     std::vector<ContactResult>
     ContactAssembler::results(const Vector<double>      &u,
-                              std::vector<Tensor<1, 3>> &surface_force) const
+                              std::vector<Tensor<1, 3>> &surface_force,
+                              std::vector<double>       &penetration) const
     {
       std::vector<ContactResult> result;
       for (const auto *i : interactions)
         {
-          const std::vector<ContactResult> r = i->results(u, surface_force);
+          const std::vector<ContactResult> r =
+            i->results(u, surface_force, penetration);
           result.insert(result.end(), r.begin(), r.end());
         }
       return result;
@@ -72,25 +74,17 @@ namespace TissueContact
     {
       SurfaceState              s;
       std::vector<Tensor<1, 3>> f(surface.X.size()), n;
-      s.interactions = results(u, f);
+      s.penetration.assign(f.size(), 0.);
+      s.interactions = results(u, f, s.penetration);
       surface.vertex_areas_and_normals(u, s.area, n);
       s.traction.assign(f.size(), Tensor<1, 3>());
       s.pressure.assign(f.size(), 0.);
-      s.penetration.assign(f.size(), 0.);
       for (unsigned int v = 0; v < f.size(); ++v)
         if (s.area[v] > 0.)
           {
             s.traction[v] = f[v] / s.area[v];
             s.pressure[v] = -s.traction[v] * n[v];
           }
-      for (const auto &[v, d] : body_penetrations(u))
-        s.penetration[v] = d;
-      if (obstacles)
-        {
-          const std::vector<double> d = obstacles->vertex_penetrations(u);
-          for (unsigned int v = 0; v < d.size(); ++v)
-            s.penetration[v] = std::max(s.penetration[v], d[v]);
-        }
       return s;
     }
 

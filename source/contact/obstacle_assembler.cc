@@ -113,8 +113,12 @@ namespace TissueContact
 
     std::vector<ContactResult>
     ObstacleAssembler::results(const Vector<double>      &u,
-                               std::vector<Tensor<1, 3>> &surface_force) const
+                               std::vector<Tensor<1, 3>> &surface_force,
+                               std::vector<double>       &penetration) const
     {
+      const std::vector<double> d = vertex_penetrations(u);
+      for (unsigned int v = 0; v < d.size(); ++v)
+        penetration[v] = std::max(penetration[v], d[v]);
       std::vector<ContactResult> result(obstacles.size());
       for_each_contact(u,
                        false,

@@ -77,7 +77,8 @@ namespace TissueContact
        * and its energy. */
       std::vector<ContactResult>
       results(const Vector<double>      &u,
-              std::vector<Tensor<1, 3>> &surface_force) const override;
+              std::vector<Tensor<1, 3>> &surface_force,
+              std::vector<double>       &penetration) const override;
 
       /** Whether @p pattern holds the couplings of every pair with nonzero
        * energy at @p u. */

@@ -56,7 +56,8 @@ namespace TissueContact
        * order, then the obstacles (ContactInteraction::results()). */
       std::vector<ContactResult>
       results(const Vector<double>      &u,
-              std::vector<Tensor<1, 3>> &surface_force) const override;
+              std::vector<Tensor<1, 3>> &surface_force,
+              std::vector<double>       &penetration) const override;
 
       /**
        * What the output shows of contact at @p u, per mesh vertex

@@ -60,12 +60,14 @@ namespace TissueContact
       energies(const Vector<double> &u) const = 0;
 
       /** The result of each declared interaction at @p u (in the order of
-       * energies()), and in @p surface_force (one entry per mesh vertex,
-       * sized by the caller) the contact force each vertex of a contact
-       * triangle receives as a triangle vertex, added. */
+       * energies()); per mesh vertex (the vectors sized by the caller), the
+       * contact force each vertex of a contact triangle receives as a
+       * triangle vertex added to @p surface_force, and the penetration it
+       * reaches raised to it in @p penetration. */
       virtual std::vector<ContactResult>
       results(const Vector<double>      &u,
-              std::vector<Tensor<1, 3>> &surface_force) const = 0;
+              std::vector<Tensor<1, 3>> &surface_force,
+              std::vector<double>       &penetration) const = 0;
 
       /** Add to @p dsp the couplings the tangent may have at @p u (with a
        * search margin @p margin); none by default. */

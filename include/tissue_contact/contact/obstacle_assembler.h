@@ -43,7 +43,8 @@ namespace TissueContact
        * largest vertex penetration and the energy. */
       std::vector<ContactResult>
       results(const Vector<double>      &u,
-              std::vector<Tensor<1, 3>> &surface_force) const override;
+              std::vector<Tensor<1, 3>> &surface_force,
+              std::vector<double>       &penetration) const override;
 
       /** Total force the obstacles exert on the bodies,
        * @f$-\sum_a \partial W/\partial x_a@f$. */
