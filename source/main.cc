@@ -60,6 +60,7 @@ end
   print_usage(std::ostream &out)
   {
     out << "Usage: tissue-contact [FILE.prm]\n"
+           "       tissue-contact --restart DIR FILE.prm\n"
            "       tissue-contact --print-parameters[=prm|json|markdown]\n"
            "Without a file, runs a small built-in scene (a twisted beam) and "
            "writes output/default-scene.pvd.\n";
@@ -75,6 +76,23 @@ main(int argc, char **argv)
       dealii::Utilities::MPI::MPI_InitFinalize mpi(
         argc, argv, dealii::numbers::invalid_unsigned_int);
 
+      if (argc == 4 && std::string(argv[1]) == "--restart")
+        {
+          // continue the run whose output folder is argv[2]
+          Scene::SceneParameters parameters =
+            Scene::SceneParameters::from_file(argv[3]);
+          parameters.output.directory = argv[2];
+          const Checkpoint checkpoint =
+            Checkpoint::read(checkpoint_file(parameters.output.directory,
+                                             parameters.output.base_name));
+          check_same_parameters(checkpoint, parameters.effective_parameters);
+          install_interrupt_handlers();
+          if (parameters.time_integration.dynamic)
+            DynamicSimulation(parameters, std::cout).run({}, &checkpoint);
+          else
+            StaticSimulation(parameters, std::cout).run(&checkpoint);
+          return 0;
+        }
       if (argc > 2)
         {
           std::cerr << "tissue-contact: error: one parameter file expected, "

@@ -9,16 +9,18 @@ namespace TissueContact
   namespace Output
   {
     ConvergenceLog::ConvergenceLog(std::ostream      &screen,
-                                   const std::string &csv_file)
+                                   const std::string &csv_file,
+                                   const bool         append)
       : screen(screen)
-      , csv(csv_file)
+      , csv(csv_file, append ? std::ios::app : std::ios::trunc)
     {
       AssertThrow(csv.good(),
                   dealii::ExcMessage("cannot write the convergence log '" +
                                      csv_file + "'"));
-      csv << "increment,load_factor,iteration,residual_norm,update_norm,"
-             "step_length,linear_iterations\n"
-          << std::flush;
+      if (!append)
+        csv << "increment,load_factor,iteration,residual_norm,update_norm,"
+               "step_length,linear_iterations\n"
+            << std::flush;
     }
 
 

@@ -4,6 +4,7 @@
 
 #include <iomanip>
 #include <limits>
+#include <sstream>
 
 namespace TissueContact
 {
@@ -11,10 +12,22 @@ namespace TissueContact
   {
     using namespace dealii;
 
-    StatisticsFile::StatisticsFile(const std::string &path)
+    StatisticsFile::StatisticsFile(const std::string &path, const bool append)
       : file_name(path)
-      , out(path)
     {
+      if (append)
+        {
+          std::ifstream in(path);
+          std::string   line, cell;
+          std::getline(in, line);
+          std::istringstream names(line);
+          while (std::getline(names, cell, ','))
+            header.push_back(cell);
+          AssertThrow(!header.empty(),
+                      ExcMessage("the statistics file '" + path +
+                                 "' to continue has no header"));
+        }
+      out.open(path, append ? std::ios::app : std::ios::trunc);
       AssertThrow(out.good(),
                   ExcMessage("cannot write the statistics file '" + path +
                              "': check that its folder exists and is "

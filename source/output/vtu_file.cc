@@ -144,6 +144,25 @@ namespace TissueContact
 
 
     void
+    write_pvd(const std::string                                 &path,
+              const std::vector<std::pair<double, std::string>> &records)
+    {
+      std::ostringstream xml;
+      xml.precision(17);
+      xml << "<?xml version=\"1.0\"?>\n"
+          << "<VTKFile type=\"Collection\" version=\"0.1\" "
+             "byte_order=\"LittleEndian\">\n"
+          << "  <Collection>\n";
+      for (const auto &[time, file] : records)
+        xml << "    <DataSet timestep=\"" << time
+            << "\" group=\"\" part=\"0\" file=\"" << file << "\"/>\n";
+      xml << "  </Collection>\n"
+          << "</VTKFile>\n";
+      write_file_atomically(path, xml.str());
+    }
+
+
+    void
     write_vtu(const std::string           &path,
               const VtuMesh               &mesh,
               const std::vector<VtuField> &point_fields,

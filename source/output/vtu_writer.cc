@@ -1,7 +1,5 @@
 #include <tissue_contact/output/vtu_writer.h>
 
-#include <deal.II/base/data_out_base.h>
-
 #include <iomanip>
 #include <map>
 #include <sstream>
@@ -210,17 +208,13 @@ namespace TissueContact
                     time,
                     options.double_precision);
           surface_records.emplace_back(time, surface_name);
-          std::ostringstream pvd;
-          DataOutBase::write_pvd_record(pvd, surface_records);
-          write_file_atomically(directory + "/" + base_name + "-surface.pvd",
-                                pvd.str());
+          write_pvd(directory + "/" + base_name + "-surface.pvd",
+                    surface_records);
         }
 
       // the series lists a state only once its files are complete
       records.emplace_back(time, name);
-      std::ostringstream pvd;
-      DataOutBase::write_pvd_record(pvd, records);
-      write_file_atomically(pvd_file(), pvd.str());
+      write_pvd(pvd_file(), records);
       return directory + "/" + name;
     }
   } // namespace Output

@@ -333,6 +333,13 @@ namespace TissueContact
                         "same base name in the output folder: remove them "
                         "before writing, or refuse to run.",
                         Patterns::Selection("remove|refuse"));
+      prm.add_parameter("Checkpoint every n steps",
+                        checkpoint_every,
+                        "Write <base>-checkpoint.bin (replacing the last "
+                        "one) after every n-th converged increment or time "
+                        "step; tissue-contact --restart DIR scene.prm "
+                        "continues from it. 0: no checkpoints.",
+                        Patterns::Integer(0));
       prm.leave_subsection();
     }
 

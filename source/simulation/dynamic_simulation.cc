@@ -37,13 +37,17 @@ namespace TissueContact
 
   std::ofstream
   DynamicSimulation::open_time_history(const std::string &columns,
-                                       std::string       &name) const
+                                       std::string       &name,
+                                       const bool         append) const
   {
     const auto &o = nonlinear_problem.get_scene().parameters.output;
     std::filesystem::create_directories(o.directory);
     name = o.directory + "/" + o.base_name + "-time.csv";
-    std::ofstream csv(name);
-    csv << columns << "\n";
+    std::ofstream csv(name, append ? std::ios::app : std::ios::trunc);
+    AssertThrow(csv.good(),
+                ExcMessage("cannot write the time history '" + name + "'"));
+    if (!append)
+      csv << columns << "\n";
     return csv;
   }
 
@@ -59,7 +63,8 @@ namespace TissueContact
   DynamicSimulation::run(
     const std::function<void(const Dynamics::TimeIntegrator &,
                              const Dynamics::State &,
-                             const Dynamics::State &)> &on_step)
+                             const Dynamics::State &)> &on_step,
+    const Checkpoint                                   *restart)
   {
     const auto &p    = nonlinear_problem.get_scene().parameters;
     const auto &ti   = p.time_integration;
@@ -91,6 +96,11 @@ namespace TissueContact
 
     if (ti.scheme == Dynamics::Scheme::ida)
       {
+        AssertThrow(restart == nullptr,
+                    ExcMessage("a run with Scheme = IDA cannot be restarted: "
+                               "IDA's multistep history is not in the "
+                               "checkpoint; restart with Newmark or implicit "
+                               "Euler, or run it again"));
         run_ida();
         return;
       }
@@ -118,15 +128,41 @@ namespace TissueContact
                  std::to_string(pair.volume_body);
     for (unsigned int i = 0; i < p.contact.obstacles.size(); ++i)
       columns += ",obstacle_" + std::to_string(i);
-    ResultWriter  results(nonlinear_problem);
+    ResultWriter  results(nonlinear_problem, restart);
     std::string   csv_name;
-    std::ofstream csv = open_time_history(columns, csv_name);
-    results.record(0, s.t, s.u, integrator.load_factor(s.t), true);
+    std::ofstream csv =
+      open_time_history(columns, csv_name, restart != nullptr);
+
+    unsigned int step = 0, cutbacks = 0, iterations = 0;
+    double       dt = ti.time_step, next_output = ti.output_interval;
+    double       dissipated = 0., t_start = 0.;
+    if (restart != nullptr)
+      {
+        AssertThrow(restart->kind == "dynamic",
+                    ExcMessage("the checkpoint is of a " + restart->kind +
+                               " run; this scene is dynamic"));
+        const auto n = disc.n_dofs();
+        s.u          = restart->vector("u", n);
+        s.v          = restart->vector("v", n);
+        s.a          = restart->vector("a", n);
+        s.t          = restart->scalar("t");
+        step         = restart->step;
+        cutbacks     = restart->scalar("cutbacks");
+        iterations   = restart->scalar("newton_iterations");
+        dt           = restart->scalar("dt");
+        next_output  = restart->scalar("next_output");
+        dissipated   = restart->scalar("dissipated");
+        integrator.restore_blow_up_reference(
+          {restart->scalar("reference_energy"),
+           restart->scalar("first_step_done") != 0.});
+        t_start = s.t;
+        out << "Restarted from the checkpoint after step " << step
+            << " (t = " << s.t << ")" << std::endl;
+      }
+    else
+      results.record(0, s.t, s.u, integrator.load_factor(s.t), true);
 
     out << "  step     time         dt           Newton  kinetic energy\n";
-    unsigned int   step = 0, cutbacks = 0, iterations = 0;
-    double         dt = ti.time_step, next_output = ti.output_interval;
-    double         dissipated = 0.;
     Vector<double> v_mid(disc.n_dofs()), Cv(disc.n_dofs());
     try
       {
@@ -170,8 +206,8 @@ namespace TissueContact
             if (p.output.print_timing)
               out << std::fixed << std::setprecision(1) << "  "
                   << timer.wall_time() << " s, about "
-                  << timer.wall_time() * (ti.end_time - s.t) / s.t << " s left"
-                  << std::defaultfloat << std::setprecision(6);
+                  << timer.wall_time() * (ti.end_time - s.t) / (s.t - t_start)
+                  << " s left" << std::defaultfloat << std::setprecision(6);
             out << std::endl;
             {
               TimerOutput::Scope scope(timer_output, "output");
@@ -187,7 +223,30 @@ namespace TissueContact
                              {{"kinetic_energy", kinetic}, {"energy", energy}});
               if (vtu_due)
                 next_output = s.t + ti.output_interval;
+              if (s.t < ti.end_time * (1. - 1e-12) &&
+                  results.checkpoint_due(step))
+                {
+                  Checkpoint c;
+                  c.kind               = "dynamic";
+                  c.step               = step;
+                  const auto reference = integrator.blow_up_reference();
+                  c.scalars            = {{"t", s.t},
+                                          {"dt", dt},
+                                          {"cutbacks", cutbacks},
+                                          {"newton_iterations", iterations},
+                                          {"next_output", next_output},
+                                          {"dissipated", dissipated},
+                                          {"reference_energy", reference.first},
+                                          {"first_step_done", reference.second}};
+                  c.vectors            = {{"u", s.u}, {"v", s.v}, {"a", s.a}};
+                  results.write_checkpoint(c,
+                                           {results.statistics_file(),
+                                            csv_name});
+                }
             }
+            // a signal received meanwhile stops the run here, every file
+            // complete
+            check_interrupt();
           }
       }
     catch (const std::exception &e)
@@ -256,6 +315,7 @@ namespace TissueContact
                          true,
                          {{"kinetic_energy", kinetic}});
           ++outputs;
+          check_interrupt();
         });
       }
     catch (const Interrupted &i)

@@ -1,8 +1,8 @@
-#include <tissue_contact/base/interrupt.h>
 #include <tissue_contact/simulation/result_writer.h>
 
 #include <filesystem>
 #include <regex>
+#include <set>
 
 namespace TissueContact
 {
@@ -22,10 +22,10 @@ namespace TissueContact
       std::regex_replace(base_name,
                          std::regex(R"([.^$|()\[\]{}*+?\\])"),
                          R"(\$&)");
-    const std::regex      ours(literal +
-                          R"((-surface)?(-[0-9]+\.vtu|\.pvd)(\.partial)?|)" +
-                          literal + R"(-(convergence|statistics|time)\.csv|)" +
-                          literal + R"(-parameters\.prm)");
+    const std::regex ours(
+      literal + R"((-surface)?(-[0-9]+\.vtu|\.pvd)(\.partial)?|)" + literal +
+      R"(-(convergence|statistics|time)\.csv|)" + literal +
+      R"(-parameters\.prm|)" + literal + R"(-checkpoint\.bin(\.partial)?)");
     std::vector<fs::path> old;
     for (const auto &entry : fs::directory_iterator(directory))
       if (entry.is_regular_file() &&
@@ -54,26 +54,61 @@ namespace TissueContact
 
   namespace
   {
-    /** Creates the folder (and clears it) before the files are opened. */
+    /** Prepares the output folder: a new run clears an earlier run's files
+     * (or refuses); a restarted one cuts the CSV files to their length at
+     * the checkpoint and removes the VTU files written after it. Returns
+     * the statistics file's path. */
     std::string
-    prepared_statistics_path(const Problem &problem)
+    prepared_statistics_path(const Problem &problem, const Checkpoint *restart)
     {
-      const auto &o = problem.get_scene().parameters.output;
-      clear_old_results(o.directory, o.base_name, o.old_results == "refuse");
+      namespace fs   = std::filesystem;
+      const auto &o  = problem.get_scene().parameters.output;
+      const auto  in = [&](const std::string &name) {
+        return o.directory + "/" + name;
+      };
+      if (restart == nullptr)
+        clear_old_results(o.directory, o.base_name, o.old_results == "refuse");
+      else
+        {
+          for (const auto &[name, size] : restart->file_sizes)
+            {
+              AssertThrow(fs::exists(in(name)) &&
+                            fs::file_size(in(name)) >= size,
+                          ExcMessage("the file '" + in(name) +
+                                     "' the checkpoint continues is missing "
+                                     "or shorter than when it was written"));
+              fs::resize_file(in(name), size);
+            }
+          std::set<std::string> kept;
+          for (const auto &r : restart->vtu_records)
+            kept.insert(r.second);
+          for (const auto &r : restart->surface_records)
+            kept.insert(r.second);
+          const std::regex vtu(
+            std::regex_replace(o.base_name,
+                               std::regex(R"([.^$|()\[\]{}*+?\\])"),
+                               R"(\$&)") +
+            R"((-surface)?-[0-9]+\.vtu(\.partial)?)");
+          for (const auto &entry : fs::directory_iterator(o.directory))
+            {
+              const std::string name = entry.path().filename().string();
+              if (std::regex_match(name, vtu) && kept.count(name) == 0)
+                fs::remove(entry.path());
+            }
+        }
       const std::string &effective =
         problem.get_scene().parameters.effective_parameters;
       if (!effective.empty())
-        Output::write_file_atomically(o.directory + "/" + o.base_name +
-                                        "-parameters.prm",
+        Output::write_file_atomically(in(o.base_name + "-parameters.prm"),
                                       effective);
-      return o.directory + "/" + o.base_name + "-statistics.csv";
+      return in(o.base_name + "-statistics.csv");
     }
   } // namespace
 
 
-  ResultWriter::ResultWriter(const Problem &problem)
+  ResultWriter::ResultWriter(const Problem &problem, const Checkpoint *restart)
     : problem(problem)
-    , statistics(prepared_statistics_path(problem))
+    , statistics(prepared_statistics_path(problem, restart), restart != nullptr)
   {
     const auto &o = problem.get_scene().parameters.output;
     if (!o.write_vtu)
@@ -90,6 +125,35 @@ namespace TissueContact
     if (const auto *contact = problem.contact_assembler())
       vtu->set_surface(contact->contact_surface().triangles,
                        contact->contact_surface().triangle_body);
+    if (restart != nullptr)
+      vtu->continue_series(restart->vtu_records, restart->surface_records);
+  }
+
+
+  bool
+  ResultWriter::checkpoint_due(const unsigned int step) const
+  {
+    const unsigned int n =
+      problem.get_scene().parameters.output.checkpoint_every;
+    return n > 0 && step % n == 0;
+  }
+
+
+  void
+  ResultWriter::write_checkpoint(Checkpoint                     &c,
+                                 const std::vector<std::string> &csv_files)
+  {
+    const auto &p = problem.get_scene().parameters;
+    c.parameters  = p.effective_parameters;
+    if (vtu)
+      {
+        c.vtu_records     = vtu->written();
+        c.surface_records = vtu->surface_written();
+      }
+    for (const std::string &file : csv_files)
+      c.file_sizes[std::filesystem::path(file).filename().string()] =
+        std::filesystem::file_size(file);
+    c.write(checkpoint_file(p.output.directory, p.output.base_name));
   }
 
 
@@ -150,8 +214,6 @@ namespace TissueContact
                    fields);
         last_written = time;
       }
-    // a signal received meanwhile stops the run here, every file complete
-    check_interrupt();
     return results;
   }
 } // namespace TissueContact

@@ -33,7 +33,7 @@ namespace TissueContact
 
 
   SolveStatistics
-  StaticSimulation::run()
+  StaticSimulation::run(const Checkpoint *restart)
   {
     const auto &scene     = nonlinear_problem.get_scene();
     const auto &p         = scene.parameters;
@@ -72,12 +72,13 @@ namespace TissueContact
           << p.contact.pairs.size() << " body pair(s)\n";
     out.flush();
 
-    ResultWriter      results(nonlinear_problem);
+    ResultWriter      results(nonlinear_problem, restart);
     const std::string csv =
       p.output.directory + "/" + p.output.base_name + "-convergence.csv";
-    Output::ConvergenceLog log(out, csv);
+    Output::ConvergenceLog log(out, csv, restart != nullptr);
 
     Solvers::IncrementalNewtonSolver solver(p.solver);
+    double                           lambda_start = 0.;
     solver.on_iteration = [&](const IterationInfo &i) {
       log.iteration(i);
       check_interrupt();
@@ -96,6 +97,24 @@ namespace TissueContact
                      lambda,
                      results.due(increment) || last,
                      {{"wall_time", total.wall_time()}});
+      if (!last && results.checkpoint_due(increment))
+        {
+          const auto &state = solver.load_state();
+          Checkpoint  c;
+          c.kind    = "static";
+          c.step    = increment;
+          c.scalars = {
+            {"lambda", state.lambda},
+            {"lambda_prev", state.lambda_prev},
+            {"increment_size", state.increment_size},
+            {"have_previous", state.have_previous},
+            {"increments", state.statistics.increments},
+            {"cutbacks", state.statistics.cutbacks},
+            {"newton_iterations", state.statistics.newton_iterations},
+            {"linear_iterations", state.statistics.linear_iterations}};
+          c.vectors = {{"u", u}, {"u_prev", state.u_prev}};
+          results.write_checkpoint(c, {results.statistics_file(), csv});
+        }
       // progress: the time left extrapolated linearly in the load factor
       if (p.output.print_timing)
         {
@@ -104,14 +123,44 @@ namespace TissueContact
                << "  converged at load factor " << lambda << " after "
                << total.wall_time() << " s";
           if (!last)
-            line << "; about " << total.wall_time() * (1. - lambda) / lambda
+            line << "; about "
+                 << total.wall_time() * (1. - lambda) / (lambda - lambda_start)
                  << " s left";
           out << line.str() << std::endl;
         }
+      // a signal received meanwhile stops the run here, every file complete
+      check_interrupt();
     };
 
-    u = 0.;
-    results.record(0, 0., u, 0., true, {{"wall_time", total.wall_time()}});
+    if (restart != nullptr)
+      {
+        AssertThrow(restart->kind == "static",
+                    ExcMessage("the checkpoint is of a " + restart->kind +
+                               " run; this scene is static"));
+        const auto                                  n = u.size();
+        Solvers::IncrementalNewtonSolver::LoadState state;
+        state.lambda                = restart->scalar("lambda");
+        state.lambda_prev           = restart->scalar("lambda_prev");
+        state.increment_size        = restart->scalar("increment_size");
+        state.have_previous         = restart->scalar("have_previous") != 0.;
+        state.statistics.increments = restart->scalar("increments");
+        state.statistics.cutbacks   = restart->scalar("cutbacks");
+        state.statistics.newton_iterations =
+          restart->scalar("newton_iterations");
+        state.statistics.linear_iterations =
+          restart->scalar("linear_iterations");
+        state.u_prev = restart->vector("u_prev", n);
+        u            = restart->vector("u", n);
+        solver.restart_from(state);
+        lambda_start = state.lambda;
+        out << "Restarted from the checkpoint after increment " << restart->step
+            << " (load factor " << state.lambda << ")" << std::endl;
+      }
+    else
+      {
+        u = 0.;
+        results.record(0, 0., u, 0., true, {{"wall_time", total.wall_time()}});
+      }
 
     SolveStatistics statistics;
     try

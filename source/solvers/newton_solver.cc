@@ -401,11 +401,22 @@ namespace TissueContact
                                    Vector<double>   &u,
                                    TimerOutput      *timer)
     {
-      SolveStatistics statistics;
-      double          lambda = 0., lambda_prev = 0.;
-      double          increment_size = parameters.initial_increment;
-      Vector<double>  u_prev(u), u_trial(u);
-      bool            have_previous = false;
+      if (restart)
+        state = *restart;
+      else
+        {
+          state                = LoadState();
+          state.increment_size = parameters.initial_increment;
+          state.u_prev         = u;
+        }
+      restart.reset();
+      SolveStatistics &statistics     = state.statistics;
+      double          &lambda         = state.lambda;
+      double          &lambda_prev    = state.lambda_prev;
+      double          &increment_size = state.increment_size;
+      bool            &have_previous  = state.have_previous;
+      Vector<double>  &u_prev         = state.u_prev;
+      Vector<double>   u_trial(u);
 
       while (lambda < 1. - 1e-12)
         {
@@ -464,13 +475,13 @@ namespace TissueContact
               lambda        = lambda_new;
               have_previous = true;
               ++statistics.increments;
-              if (on_increment)
-                on_increment(statistics.increments, lambda, u);
               if (statistics.newton_iterations - its_before <=
                   parameters.easy_iterations)
                 increment_size =
                   std::min(parameters.maximum_increment,
                            increment_size * parameters.growth_factor);
+              if (on_increment)
+                on_increment(statistics.increments, lambda, u);
             }
           else
             {

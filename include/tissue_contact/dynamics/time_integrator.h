@@ -168,6 +168,23 @@ namespace TissueContact
       double
       load_factor(const double t) const;
 
+      /** The kinetic-energy scale of the explicit scheme's blow-up check,
+       * and whether its first step has set it: what a checkpoint keeps of
+       * the integrator besides the State. */
+      std::pair<double, bool>
+      blow_up_reference() const
+      {
+        return {reference_energy, !first_explicit_step};
+      }
+
+      /** Restore blow_up_reference() (a restarted run). */
+      void
+      restore_blow_up_reference(const std::pair<double, bool> &reference)
+      {
+        reference_energy    = reference.first;
+        first_explicit_step = !reference.second;
+      }
+
       /** Newton iterations of the last implicit step. */
       unsigned int last_iterations = 0;
 

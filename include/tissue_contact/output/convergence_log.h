@@ -21,7 +21,10 @@ namespace TissueContact
     class ConvergenceLog
     {
     public:
-      ConvergenceLog(std::ostream &screen, const std::string &csv_file);
+      /** With @p append, continue @p csv_file (a restarted run). */
+      ConvergenceLog(std::ostream      &screen,
+                     const std::string &csv_file,
+                     const bool         append = false);
 
       void
       iteration(const IterationInfo &info);

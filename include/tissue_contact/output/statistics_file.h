@@ -20,9 +20,11 @@ namespace TissueContact
     class StatisticsFile
     {
     public:
-      /** Create (or truncate) @p path; throws naming it if it cannot be
+      /** Create (or truncate) @p path, or with @p append continue it (its
+       * first line is the header); throws naming it if it cannot be
        * written. */
-      explicit StatisticsFile(const std::string &path);
+      explicit StatisticsFile(const std::string &path,
+                              const bool         append = false);
 
       /** Write one row of (column name, value). */
       void

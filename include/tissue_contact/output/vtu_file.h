@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace TissueContact
@@ -60,6 +61,16 @@ namespace TissueContact
               const std::vector<VtuField> &cell_fields,
               const double                 time,
               const bool                   double_precision);
+
+    /**
+     * Write the ParaView series @p path (.pvd) listing @p records (time,
+     * file name relative to the series), atomically as write_vtu(). The
+     * file holds nothing but the list (no date), so equal series give
+     * equal files.
+     */
+    void
+    write_pvd(const std::string                                 &path,
+              const std::vector<std::pair<double, std::string>> &records);
 
     /**
      * Write @p contents to @p path through a temporary file in the same

@@ -78,6 +78,30 @@ namespace TissueContact
       std::string
       pvd_file() const;
 
+      /** The states written: (time, file name) of the volume and the
+       * surface files. */
+      const std::vector<std::pair<double, std::string>> &
+      written() const
+      {
+        return records;
+      }
+      const std::vector<std::pair<double, std::string>> &
+      surface_written() const
+      {
+        return surface_records;
+      }
+
+      /** Continue a series of which @p volume and @p surface were written
+       * (a restarted run): the next state gets the next number. */
+      void
+      continue_series(
+        const std::vector<std::pair<double, std::string>> &volume,
+        const std::vector<std::pair<double, std::string>> &surface)
+      {
+        records         = volume;
+        surface_records = surface;
+      }
+
       /** The number of states written. */
       unsigned int
       n_written() const

@@ -113,7 +113,8 @@ namespace TissueContact
       unsigned int every_n_steps    = 1;
       bool         double_precision = false;
       std::string  length_unit, force_unit;
-      std::string  old_results = "remove";
+      std::string  old_results      = "remove";
+      unsigned int checkpoint_every = 1;
 
       /** Enter "Output" and bind its entries to this object. */
       void

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <tissue_contact/dynamics/time_integrator.h>
+#include <tissue_contact/simulation/checkpoint.h>
 #include <tissue_contact/simulation/problem.h>
 
 #include <fstream>
@@ -36,7 +37,8 @@ namespace TissueContact
     void
     run(const std::function<void(const Dynamics::TimeIntegrator &integrator,
                                  const Dynamics::State          &before,
-                                 const Dynamics::State &after)> &on_step = {});
+                                 const Dynamics::State &after)> &on_step = {},
+        const Checkpoint *restart = nullptr);
 
     /** The scene's problem it integrates (assembly, contact, energy). */
     const Problem &
@@ -59,7 +61,9 @@ namespace TissueContact
     /** Create the output folder and <base>-time.csv with the header
      * @p columns; @p name gets its path. */
     std::ofstream
-    open_time_history(const std::string &columns, std::string &name) const;
+    open_time_history(const std::string &columns,
+                      std::string       &name,
+                      const bool         append = false) const;
 
     /** The material depth for the VTU output (scenes with body pairs). */
     const std::vector<double> *

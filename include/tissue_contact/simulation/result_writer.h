@@ -2,6 +2,7 @@
 
 #include <tissue_contact/output/statistics_file.h>
 #include <tissue_contact/output/vtu_writer.h>
+#include <tissue_contact/simulation/checkpoint.h>
 #include <tissue_contact/simulation/problem.h>
 #include <tissue_contact/simulation/step_results.h>
 
@@ -21,12 +22,17 @@ namespace TissueContact
    * every Output/Every n steps-th (and the last) the VTU files with the
    * material depth and the contact fields. At the start it removes an
    * earlier run's files with the same base name from the output folder
-   * (or refuses: Output/Old results).
+   * (or refuses: Output/Old results); a restarted run instead continues
+   * the files of the checkpoint it starts from: the CSV files cut to their
+   * length then, the VTU files written after it removed, the series
+   * continued. It also writes the checkpoints (write_checkpoint()).
    */
   class ResultWriter
   {
   public:
-    explicit ResultWriter(const Problem &problem);
+    /** A new run, or with @p restart the continuation of one. */
+    explicit ResultWriter(const Problem    &problem,
+                          const Checkpoint *restart = nullptr);
 
     /** Record the converged state @p u of step @p step at load factor or
      * time @p time (load factor @p load_factor): the statistics row
@@ -56,6 +62,17 @@ namespace TissueContact
     {
       return statistics.path();
     }
+
+    /** Whether converged step @p step is due for a checkpoint
+     * (Output/Checkpoint every n steps; 0: never). */
+    bool
+    checkpoint_due(const unsigned int step) const;
+
+    /** Complete @p c with the output's state (the series written, the CSV
+     * files' sizes: @p csv_files, each flushed) and the run's parameters,
+     * and write it to <base>-checkpoint.bin. */
+    void
+    write_checkpoint(Checkpoint &c, const std::vector<std::string> &csv_files);
 
     /** The time of the last state written to the VTU series, or -1. */
     double

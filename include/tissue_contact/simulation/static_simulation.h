@@ -1,6 +1,7 @@
 #pragma once
 
 #include <tissue_contact/base/solve_statistics.h>
+#include <tissue_contact/simulation/checkpoint.h>
 #include <tissue_contact/simulation/problem.h>
 
 #include <functional>
@@ -25,9 +26,10 @@ namespace TissueContact
                      std::ostream                 &out);
 
     /** Solve and write output. Throws (after keeping every result already
-     * written) if the solve fails. */
+     * written) if the solve fails. With @p restart, continue the run that
+     * wrote that checkpoint (its output files are continued). */
     SolveStatistics
-    run();
+    run(const Checkpoint *restart = nullptr);
 
     /** Solve without writing any file (for tests); @p on_iteration, if
      * given, sees every Newton iteration. On failure the exception

@@ -9,6 +9,7 @@
 #include <deal.II/base/timer.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 
 namespace TissueContact
@@ -71,6 +72,38 @@ namespace TissueContact
 
       explicit IncrementalNewtonSolver(const Parameters &parameters);
 
+      /**
+       * Where the load stepping stands between two increments: the last
+       * converged load factor and the one before it, with that state (the
+       * two-point predictor's), the size of the next increment and the
+       * counts so far. Everything solve() needs to continue a run exactly
+       * as it would have gone on (a checkpoint holds it).
+       */
+      struct LoadState
+      {
+        double          lambda = 0., lambda_prev = 0.;
+        double          increment_size = 0.;
+        bool            have_previous  = false;
+        Vector<double>  u_prev;
+        SolveStatistics statistics;
+      };
+
+      /** The load state, valid during on_increment (after the increment's
+       * size update) and after solve(). */
+      const LoadState &
+      load_state() const
+      {
+        return state;
+      }
+
+      /** Make the next solve() continue from @p start (with the state u
+       * it is given at load factor start.lambda) instead of load factor 0. */
+      void
+      restart_from(const LoadState &start)
+      {
+        restart = std::make_unique<LoadState>(start);
+      }
+
       /** Called after every Newton iteration. */
       std::function<void(const IterationInfo &)> on_iteration;
       /** Called after every converged increment with its load factor. */
@@ -94,6 +127,11 @@ namespace TissueContact
             Vector<double>   &u,
             TimerOutput      *timer = nullptr);
 
+    private:
+      LoadState                  state;
+      std::unique_ptr<LoadState> restart;
+
+    public:
       /**
        * One Newton solve (LOOPs 2 and 3) at a fixed load factor starting
        * from @p u. Throws SolveFailed with the reason if it fails (u is
