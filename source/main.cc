@@ -139,6 +139,15 @@ main(int argc, char **argv)
       else
         StaticSimulation(parameters, std::cout).run();
     }
+  catch (const std::bad_alloc &)
+    {
+      std::cout.flush();
+      std::cerr << "tissue-contact: error: out of memory: the scene needs "
+                   "more memory than this machine has (a mesh too fine, or "
+                   "a corrupt element count?)"
+                << std::endl;
+      return 1;
+    }
   catch (const Interrupted &e)
     {
       std::cout.flush();

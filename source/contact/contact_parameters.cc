@@ -36,14 +36,15 @@ namespace TissueContact
                         vector_pattern());
       prm.add_parameter("Radius",
                         obstacle.radius,
-                        "Radius of the sphere, in length units; >= 0.",
+                        "Radius of the sphere, in length units; > 0.",
                         Patterns::Double(0.));
       prm.add_parameter(
         "Penalty factor",
         penalty,
         "eps_p in W = eps_p/2 int d^2 da over the penetrating part of each "
         "contact triangle (d: penetration depth); the penetration falls as "
-        "1/eps_p. Units: stress per length (consistent units); >= 0.",
+        "1/eps_p. Units: stress per length (consistent units); >= 0 (0: the "
+        "obstacle pushes nothing, with a warning).",
         Patterns::Double(0.));
       prm.add_parameter("Bodies",
                         bodies,
@@ -83,7 +84,8 @@ namespace TissueContact
         penalty,
         "eps_p in W = eps_p/2 int g^2 da over every triangle-tetrahedron "
         "intersection (g: the material depth of the volume body). Units: "
-        "stress per length (consistent units); >= 0.",
+        "stress per length (consistent units); >= 0 (0: the pair pushes "
+        "nothing, a baseline without contact, with a warning).",
         Patterns::Double(0.));
       add_selection<bool>(
         prm,
@@ -142,6 +144,28 @@ namespace TissueContact
     {
       for (auto &o : obstacles)
         o.parse_parameters(prm);
+      for (unsigned int i = 0; i < obstacles.size(); ++i)
+        {
+          const std::string name = "Contact/Obstacle " + std::to_string(i);
+          AssertThrow(obstacles[i].penalty < 1e100,
+                      ExcMessage(name + ": Penalty factor " +
+                                 Utilities::to_string(obstacles[i].penalty) +
+                                 " is out of range: it must be below 1e100"));
+          AssertThrow(
+            obstacles[i].obstacle.type != AnalyticObstacle::Type::sphere ||
+              (obstacles[i].obstacle.radius > 0. &&
+               obstacles[i].obstacle.radius < 1e100),
+            ExcMessage(name +
+                       ": a sphere needs a Radius > 0 (and "
+                       "below 1e100), not " +
+                       Utilities::to_string(obstacles[i].obstacle.radius)));
+        }
+      for (unsigned int i = 0; i < pairs.size(); ++i)
+        AssertThrow(pairs[i].penalty < 1e100,
+                    ExcMessage("Contact/Pair " + std::to_string(i) +
+                               ": Penalty factor " +
+                               Utilities::to_string(pairs[i].penalty) +
+                               " is out of range: it must be below 1e100"));
       AssertThrow(!enabled() || !surfaces.empty(),
                   ExcMessage("Contact: obstacles or pairs are declared but no "
                              "Contact surfaces; list the boundary ids that "

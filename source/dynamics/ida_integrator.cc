@@ -4,13 +4,88 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/numerics/matrix_tools.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace TissueContact
 {
   namespace Dynamics
   {
+    namespace
+    {
+      /** Redirects the process's stderr into a temporary file while it
+       * lives (restored by the destructor). */
+      class StderrCapture
+      {
+      public:
+        StderrCapture()
+        {
+          std::fflush(stderr);
+          saved = ::dup(2);
+          file  = std::tmpfile();
+          if (file != nullptr && saved >= 0)
+            ::dup2(::fileno(file), 2);
+        }
+        ~StderrCapture()
+        {
+          restore();
+          if (file != nullptr)
+            std::fclose(file);
+        }
+        /** Restore stderr; the first captured line containing @p text,
+         * trimmed to one line ("" if none). */
+        std::string
+        first_line_with(const std::string &text)
+        {
+          restore();
+          if (file == nullptr)
+            return "";
+          std::rewind(file);
+          char buffer[4096];
+          while (std::fgets(buffer, sizeof(buffer), file) != nullptr)
+            {
+              std::string line(buffer);
+              while (!line.empty() &&
+                     (line.back() == '\n' || line.back() == '\r'))
+                line.pop_back();
+              if (line.find(text) != std::string::npos)
+                {
+                  // IDA puts the message after the routine's name
+                  std::string next;
+                  if (std::fgets(buffer, sizeof(buffer), file) != nullptr)
+                    next = buffer;
+                  while (!next.empty() &&
+                         (next.back() == '\n' || next.back() == '\r'))
+                    next.pop_back();
+                  const auto first = next.find_first_not_of(' ');
+                  return line + (first == std::string::npos ?
+                                   "" :
+                                   " " + next.substr(first));
+                }
+            }
+          return "";
+        }
+
+      private:
+        void
+        restore()
+        {
+          if (saved >= 0)
+            {
+              std::fflush(stderr);
+              ::dup2(saved, 2);
+              ::close(saved);
+              saved = -1;
+            }
+        }
+        int   saved = -1;
+        FILE *file  = nullptr;
+      };
+    } // namespace
+
     IdaIntegrator::IdaIntegrator(
       const SUNDIALS::IDA<Vector<double>>::AdditionalData &data,
       const TimeIntegrator::Parameters                    &parameters,
@@ -218,6 +293,9 @@ namespace TissueContact
           }
       }
       unsigned int steps = 0;
+      // SUNDIALS prints its errors on stderr, several lines each: keep them
+      // and report the first as one line of the failure instead
+      StderrCapture ida_messages;
       try
         {
           steps = ida.solve_dae(y, y_dot);
@@ -226,8 +304,11 @@ namespace TissueContact
         {
           // SUNDIALS' own error codes (a failed step, a convergence test
           // failure) come as deal.II exceptions
-          throw SolveFailed(error_message(e));
+          const std::string said = ida_messages.first_line_with("IDA");
+          throw SolveFailed(error_message(e) +
+                            (said.empty() ? "" : " (IDA: " + said + ")"));
         }
+      const std::string said = ida_messages.first_line_with("IDA ERROR");
       // IDA reports some failures (too many steps before an output time)
       // only on the screen: check that it got to the end
       const double stopped = std::min(off_schedule, last_output);
@@ -236,7 +317,8 @@ namespace TissueContact
         throw SolveFailed("IDA stopped at t = " + std::to_string(stopped) +
                           " before an output time (too many steps or a "
                           "failed step: loosen the tolerances or shorten the "
-                          "output interval)");
+                          "output interval)" +
+                          (said.empty() ? "" : "; IDA said: " + said));
       split(y, s.u, s.v);
       Vector<double> u_dot;
       split(y_dot, u_dot, s.a);

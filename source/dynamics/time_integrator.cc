@@ -304,7 +304,8 @@ namespace TissueContact
                         growth_factor,
                         "After a step with at most 3 Newton iterations the "
                         "next may grow by this factor (>= 1; up to Time "
-                        "step).",
+                        "step): a step cut back at an impact grows back "
+                        "afterwards.",
                         Patterns::Double(1.));
       prm.add_parameter("Newmark beta",
                         beta,
@@ -608,10 +609,14 @@ namespace TissueContact
               h;
           return h;
         }
-      throw SolveFailed("time integration failed: the step fell below the "
-                        "minimum " +
-                        std::to_string(parameters.minimum_step) +
-                        "; last failure " + reason);
+      std::ostringstream msg;
+      msg << "time integration failed at t = " << s.t << ": the step was "
+          << "halved from " << dt << " to " << h
+          << ", below the Minimum time step " << parameters.minimum_step
+          << ", and the implicit step still failed: " << reason
+          << ". Try a smaller Time step, more Rayleigh damping, a smaller "
+             "Penalty factor or the quasi-viscosity";
+      throw SolveFailed(msg.str());
     }
   } // namespace Dynamics
 } // namespace TissueContact

@@ -8,6 +8,8 @@
 
 #include <deal.II/base/function_parser.h>
 
+#include <cmath>
+
 namespace TissueContact
 {
   namespace Materials
@@ -94,6 +96,28 @@ namespace TissueContact
     {
       if (b.model == "rigid")
         return nullptr;
+      // magnitudes that overflow the energy (exp(beta (I1 - 3)), squares
+      // of moduli) are refused by name, not met later as an inverted
+      // element or a failed line search
+      for (const auto &[name, value] :
+           std::vector<std::pair<std::string, double>>{
+             {"Mu", b.mu},
+             {"Lambda", b.lambda},
+             {"C1", b.C1},
+             {"C2", b.C2},
+             {"a", b.a},
+             {"Alpha", b.alpha},
+             {"Beta", b.beta},
+             {"Fiber/Alpha", b.fiber_alpha},
+             {"Fiber/Beta", b.fiber_beta}})
+        AssertThrow(std::isfinite(value) &&
+                      std::abs(value) <=
+                        (name.find("Beta") != std::string::npos ? 1e3 : 1e100),
+                    ExcMessage("the value of " + name + " (" +
+                               Utilities::to_string(value) +
+                               ") is out of range: moduli must stay below "
+                               "1e100 and the exponents Beta below 1e3 "
+                               "(exp(Beta) overflows at 709)"));
       if (b.model == "linear")
         {
           AssertThrow(!b.fiber,

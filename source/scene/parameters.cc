@@ -559,6 +559,11 @@ namespace TissueContact
     SceneParameters::parse_parameters(ParameterHandler  &prm,
                                       const std::string &dir)
     {
+      AssertThrow(!output.base_name.empty() &&
+                    output.base_name.find('/') == std::string::npos,
+                  ExcMessage("Output: Base name '" + output.base_name +
+                             "' must be a file name (not empty, no '/'); "
+                             "the folder is Output/Directory"));
       mesh.parse_parameters(prm, dir);
       for (auto &b : bodies)
         b.parse_parameters(prm);

@@ -9,9 +9,11 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <deque>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -68,11 +70,12 @@ namespace TissueContact
       }
 
 
-      /** Mesh the gmsh geometry @p geo with `gmsh -3 @p options` into a
-       * temporary .msh file (format 2.2) and return its name; an error
-       * quoting gmsh's last lines if gmsh is missing or fails. */
+      /** Run `gmsh @p options @p geo` into a temporary .msh file (format
+       * 2.2) and return its name: `-3 ...` meshes a geometry, `-0`
+       * converts a mesh of another format; an error quoting gmsh's last
+       * lines if gmsh is missing or fails. */
       std::string
-      mesh_geometry(const std::string &geo, const std::string &options)
+      gmsh_to_msh(const std::string &geo, const std::string &options)
       {
         namespace fs = std::filesystem;
         const std::string stem =
@@ -80,8 +83,8 @@ namespace TissueContact
            ("tissue-contact-" + std::to_string(::getpid())))
             .string();
         const std::string msh = stem + ".msh", log = stem + ".log";
-        const std::string cmd = "gmsh -3 -format msh22 " + options + " '" +
-                                geo + "' -o '" + msh + "' > '" + log + "' 2>&1";
+        const std::string cmd = "gmsh -format msh22 " + options + " '" + geo +
+                                "' -o '" + msh + "' > '" + log + "' 2>&1";
         const int   status = std::system(cmd.c_str());
         const bool  ok     = status == 0 && fs::exists(msh);
         std::string tail;
@@ -99,11 +102,172 @@ namespace TissueContact
         }
         fs::remove(log);
         AssertThrow(ok,
-                    ExcMessage("gmsh could not mesh the geometry '" + geo +
-                               "' (Mesh: Source = geo; is gmsh installed? "
-                               "command: " +
-                               cmd + "); its last output:" + tail));
+                    ExcMessage("gmsh could not " +
+                               std::string(options.rfind("-0", 0) == 0 ?
+                                             "convert the mesh '" :
+                                             "mesh the geometry '") +
+                               geo + "' (is gmsh installed? command: " + cmd +
+                               "); its last output:" + tail));
         return msh;
+      }
+
+      /** What is wrong with the gmsh file @p file before its parser sees
+       * it (empty, binary, of a version the reader does not know,
+       * truncated), or "" if nothing. */
+      std::string
+      gmsh_file_problem(const std::string &file)
+      {
+        std::ifstream in(file, std::ios::binary);
+        std::string   first, format;
+        std::getline(in, first);
+        std::getline(in, format);
+        if (!first.empty() && first.back() == '\r')
+          first.pop_back();
+        if (first != "$MeshFormat")
+          return "it does not start with $MeshFormat: not a gmsh .msh file "
+                 "(or one in gmsh's old format 1)";
+        std::istringstream f(format);
+        std::string        version;
+        int                file_type = -1;
+        f >> version >> file_type;
+        if (version.empty() ||
+            version.find_first_not_of("0123456789.") != std::string::npos)
+          return "its $MeshFormat section holds '" + format +
+                 "' instead of a version, file type and data size";
+        if (version.rfind("2.", 0) != 0 && version.rfind("4.", 0) != 0)
+          return "its format version is " + version +
+                 "; this program reads versions 2 and 4 (gmsh -format msh22 "
+                 "or msh41)";
+        if (file_type != 0)
+          return "it is a binary file; save it as ASCII (gmsh -bin 0, or "
+                 "File > Export with 'Save all' and ASCII)";
+        // the last kilobytes must close the element section
+        in.seekg(0, std::ios::end);
+        const std::streamoff size = in.tellg();
+        const std::streamoff tail = std::min<std::streamoff>(size, 4096);
+        std::string          end(tail, '\0');
+        in.seekg(size - tail);
+        in.read(&end[0], tail);
+        if (end.find("$EndElements") == std::string::npos)
+          return "it is truncated: it ends before $EndElements (an "
+                 "interrupted download or copy?)";
+        // coordinates the parser would stop at with a misleading message
+        in.clear();
+        in.seekg(0);
+        bool in_nodes = false;
+        for (std::string line; std::getline(in, line);)
+          {
+            if (line.rfind("$Nodes", 0) == 0)
+              in_nodes = true;
+            else if (line.rfind("$EndNodes", 0) == 0)
+              break;
+            else if (in_nodes)
+              for (char &c : line)
+                c = std::tolower(c);
+            if (in_nodes && (line.find("nan") != std::string::npos ||
+                             line.find("inf") != std::string::npos))
+              return "a node has a NaN or infinite coordinate (line '" + line +
+                     "' of the $Nodes section)";
+          }
+        return "";
+      }
+
+
+      /** Read the mesh file @p file, its format chosen by the suffix (.msh
+       * gmsh, .unv I-DEAS, .vtk legacy VTK; .inp and .vtu are refused
+       * with the reason), into @p triangulation; every problem named. */
+      void
+      read_mesh_file(const std::string &file, Triangulation<3> &triangulation)
+      {
+        namespace fs = std::filesystem;
+        AssertThrow(fs::exists(file) && !fs::is_directory(file) &&
+                      std::ifstream(file).good(),
+                    ExcMessage("mesh file '" + file +
+                               "' does not exist or cannot be read"));
+        AssertThrow(fs::file_size(file) > 0,
+                    ExcMessage("the mesh file '" + file + "' is empty"));
+        std::string suffix = fs::path(file).extension().string();
+        for (char &c : suffix)
+          c = std::tolower(c);
+        // deal.II 9.4 reads tetrahedra from gmsh files only (its Abaqus,
+        // UNV and VTK readers take hexahedra): I-DEAS and legacy VTK files
+        // are converted by gmsh, which keeps UNV's groups as material and
+        // boundary ids (VTK has none: every id is 0)
+        if (suffix == ".unv" || suffix == ".vtk")
+          {
+            const std::string msh = gmsh_to_msh(file, "-0");
+            try
+              {
+                read_mesh_file(msh, triangulation);
+              }
+            catch (...)
+              {
+                fs::remove(msh);
+                throw;
+              }
+            fs::remove(msh);
+            return;
+          }
+        AssertThrow(suffix != ".inp" && suffix != ".vtu",
+                    ExcMessage("cannot read the mesh file '" + file + "': " +
+                               (suffix == ".inp" ?
+                                  "Abaqus .inp files of tetrahedra are read "
+                                  "neither by deal.II 9.4 (hexahedra only) "
+                                  "nor by gmsh 4.8" :
+                                  "deal.II 9.4 reads only the .vtu files it "
+                                  "wrote itself") +
+                               "; export the mesh as gmsh .msh (versions 2 "
+                               "or 4), I-DEAS .unv or legacy .vtk"));
+        AssertThrow(suffix == ".msh",
+                    ExcMessage("the mesh file '" + file + "' has the suffix '" +
+                               suffix +
+                               "', which names no format this program "
+                               "reads: .msh (gmsh), .unv (I-DEAS) or .vtk "
+                               "(legacy VTK)"));
+        const std::string problem = gmsh_file_problem(file);
+        AssertThrow(problem.empty(),
+                    ExcMessage("cannot read the mesh file '" + file +
+                               "': " + problem));
+        GridIn<3> grid_in;
+        grid_in.attach_triangulation(triangulation);
+        std::ifstream in(file);
+        try
+          {
+            grid_in.read_msh(in);
+          }
+        catch (const std::bad_alloc &)
+          {
+            AssertThrow(false,
+                        ExcMessage("the mesh in '" + file +
+                                   "' needs more memory than this machine "
+                                   "has (or its node or element count is "
+                                   "corrupt)"));
+          }
+        catch (const std::length_error &)
+          {
+            AssertThrow(false,
+                        ExcMessage("the mesh in '" + file +
+                                   "' declares more nodes or elements than "
+                                   "can be stored (a corrupt count?)"));
+          }
+        catch (const std::exception &e)
+          {
+            AssertThrow(false,
+                        ExcMessage(
+                          "cannot read the mesh file '" + file +
+                          "' as a gmsh .msh file: " + error_message(e)));
+          }
+        const auto &vertices = triangulation.get_vertices();
+        for (unsigned int v = 0; v < vertices.size(); ++v)
+          for (unsigned int d = 0; d < 3; ++d)
+            AssertThrow(
+              std::isfinite(vertices[v][d]) && std::abs(vertices[v][d]) < 1e100,
+              ExcMessage("the mesh file '" + file + "' has " +
+                         (std::isfinite(vertices[v][d]) ?
+                            "a coordinate out of range (" +
+                              Utilities::to_string(vertices[v][d]) + ")" :
+                            "a NaN or infinite coordinate") +
+                         " at vertex " + std::to_string(v)));
       }
     } // namespace
 
@@ -138,27 +302,33 @@ namespace TissueContact
           AssertThrow(std::ifstream(m.file).good(),
                       ExcMessage("mesh file '" + m.file +
                                  "' does not exist or cannot be read"));
-          const std::string msh =
-            m.source == "geo" ? mesh_geometry(m.file, m.gmsh_options) : m.file;
-          GridIn<3> grid_in;
-          grid_in.attach_triangulation(triangulation);
-          std::ifstream in(msh);
-          try
-            {
-              grid_in.read_msh(in);
-            }
-          catch (const std::exception &e)
-            {
-              AssertThrow(false,
-                          ExcMessage(
-                            "cannot read mesh file '" + m.file +
-                            "' as a gmsh .msh file: " + error_message(e)));
-            }
           if (m.source == "geo")
-            std::filesystem::remove(msh);
+            {
+              const std::string msh =
+                gmsh_to_msh(m.file, "-3 " + m.gmsh_options);
+              try
+                {
+                  read_mesh_file(msh, triangulation);
+                }
+              catch (...)
+                {
+                  std::filesystem::remove(msh);
+                  throw;
+                }
+              std::filesystem::remove(msh);
+            }
+          else
+            read_mesh_file(m.file, triangulation);
         }
       if (m.scale != 1.)
         GridTools::scale(m.scale, triangulation);
+      for (const auto &x : triangulation.get_vertices())
+        AssertThrow(x.norm() < 1e100,
+                    ExcMessage("the mesh's coordinates are out of range "
+                               "after Mesh/Scale = " +
+                               Utilities::to_string(m.scale) + " (" +
+                               Utilities::to_string(x.norm()) +
+                               "): use a scale that keeps them below 1e100"));
       if (m.distortion > 0.)
         GridTools::distort_random(m.distortion, triangulation, true, 20261122);
     }

@@ -27,6 +27,16 @@ namespace TissueContact
     const auto  bodies = nonlinear_problem.get_scene().body_data();
     const auto &ti     = parameters.time_integration;
     M_lumped           = Dynamics::lumped_mass(disc, bodies);
+    // every deformable body needs mass: a massless node has no
+    // acceleration in the explicit scheme and makes the implicit ones'
+    // inertia singular where the stiffness vanishes
+    for (const auto &b : parameters.bodies)
+      AssertThrow(b.material.model == "rigid" || b.density > 0.,
+                  ExcMessage("body '" + b.name +
+                             "' has Density 0: a dynamic analysis needs "
+                             "mass in every deformable body; give it its "
+                             "density (or run it static: Time "
+                             "integration/Analysis = static)"));
     if (!ti.lumped_mass && ti.scheme != Dynamics::Scheme::central_difference)
       {
         M.reinit(disc.sparsity_pattern);
@@ -81,6 +91,8 @@ namespace TissueContact
         << ", end time " << ti.end_time << ", "
         << (M.empty() ? "lumped" : "consistent") << " mass "
         << M_lumped.mean_value() * M_lumped.size() / 3. << "\n";
+    for (const auto &w : nonlinear_problem.warnings())
+      out << "  warning: " << w << "\n";
     if (ti.scheme == Dynamics::Scheme::central_difference)
       {
         const double estimate = Dynamics::stable_time_step_estimate(
@@ -253,7 +265,8 @@ namespace TissueContact
       {
         nonlinear_problem.set_timer(nullptr);
         const std::string kept =
-          "; the steps up to t = " + std::to_string(s.t) + " are kept in " +
+          "; the steps up to t = " + Utilities::to_string(s.t) +
+          " are kept in " +
           (p.output.write_vtu ? results.pvd_file() + " and " : "") +
           results.statistics_file();
         if (const auto *i = dynamic_cast<const Interrupted *>(&e))

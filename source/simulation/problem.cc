@@ -6,7 +6,9 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <algorithm>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <set>
 
@@ -23,6 +25,40 @@ namespace TissueContact
     if (parameters.contact.enabled())
       contact =
         std::make_unique<Contact::ContactAssembler>(disc, parameters.contact);
+    // a body whose material depth is zero everywhere cannot be entered: the
+    // penalty of its pairs would do nothing, silently
+    if (contact && !parameters.contact.pairs.empty())
+      {
+        const std::vector<double>           &depth = contact->vertex_depth();
+        std::map<types::material_id, double> largest;
+        for (const auto &cell : scene.triangulation.active_cell_iterators())
+          {
+            const auto body =
+              Contact::body_of_material(parameters.contact.body_of_material,
+                                        cell->material_id());
+            for (const unsigned int v : cell->vertex_indices())
+              largest[body] =
+                std::max(largest[body], depth[cell->vertex_index(v)]);
+          }
+        for (unsigned int i = 0; i < parameters.contact.pairs.size(); ++i)
+          {
+            const auto  id   = parameters.contact.pairs[i].volume_body;
+            std::string name = "material id " + std::to_string(id);
+            for (const auto &b : parameters.bodies)
+              if (b.id == id)
+                name =
+                  "'" + b.name + "' (material id " + std::to_string(id) + ")";
+            AssertThrow(largest[id] > 0.,
+                        ExcMessage(
+                          "Contact pair " + std::to_string(i) + ": body " +
+                          name +
+                          " has material depth zero everywhere (every vertex "
+                          "lies on a contact surface), so nothing can "
+                          "penetrate it and the pair would push nothing; "
+                          "refine it so that it has vertices inside, or list "
+                          "fewer of its boundary ids as Contact surfaces"));
+          }
+      }
     const auto free_bodies = scene.free_rigid_bodies(disc);
     if (!free_bodies.empty())
       {
@@ -121,6 +157,26 @@ namespace TissueContact
           }
       }
     assembler.use_matrix_pattern(sparsity);
+  }
+
+
+  std::vector<std::string>
+  Problem::warnings() const
+  {
+    const auto              &c = scene.parameters.contact;
+    std::vector<std::string> result;
+    for (unsigned int i = 0; i < c.pairs.size(); ++i)
+      if (c.pairs[i].penalty == 0.)
+        result.push_back("Contact/Pair " + std::to_string(i) +
+                         " has Penalty factor 0: it pushes nothing and the "
+                         "bodies pass through each other (a baseline "
+                         "without contact; else give it a penalty > 0)");
+    for (unsigned int i = 0; i < c.obstacles.size(); ++i)
+      if (c.obstacles[i].penalty == 0.)
+        result.push_back("Contact/Obstacle " + std::to_string(i) +
+                         " has Penalty factor 0: it pushes nothing and the "
+                         "bodies pass through it (give it a penalty > 0)");
+    return result;
   }
 
 

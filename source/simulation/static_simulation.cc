@@ -70,6 +70,8 @@ namespace TissueContact
       out << "  contact: " << contact->n_triangles() << " contact triangles, "
           << p.contact.obstacles.size() << " obstacle(s), "
           << p.contact.pairs.size() << " body pair(s)\n";
+    for (const auto &w : nonlinear_problem.warnings())
+      out << "  warning: " << w << "\n";
     out.flush();
 
     ResultWriter      results(nonlinear_problem, restart);

@@ -180,6 +180,27 @@ namespace TissueContact
             << error_message(e);
           throw SolveFailed(s.str());
         }
+      // KINSOL also returns "success" when its scaled step falls below the
+      // step tolerance, wherever that happens: accept only a state without
+      // inverted elements whose residual meets the tolerance
+      Vector<double> R(n);
+      if (!problem.assemble(u, load_factor, R, nullptr))
+        throw SolveFailed("KINSOL stopped at a state with an inverted element "
+                          "(its scaled step fell below the Scaled step "
+                          "stopping tolerance there)");
+      for (const auto &t : targets)
+        R[t.first] = u[t.first] - t.second;
+      if (!(R.linfty_norm() <= data.function_tolerance))
+        {
+          std::ostringstream s;
+          s << "KINSOL stopped without converging: its scaled step fell below "
+               "the Scaled step stopping tolerance with max |R| = "
+            << R.linfty_norm() << " above the tolerance "
+            << data.function_tolerance
+            << " (lower Scaled step stopping tolerance, or use Nonlinear "
+               "solver = Newton)";
+          throw SolveFailed(s.str());
+        }
     }
   } // namespace Solvers
 } // namespace TissueContact

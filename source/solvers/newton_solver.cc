@@ -60,9 +60,10 @@ namespace TissueContact
       prm.add_parameter("Residual tolerance",
                         residual_tolerance,
                         "Converged when |R| on the free DoFs is below this "
-                        "fraction (>= 0) of the force scale (applied loads "
-                        "or reactions, whichever is larger).",
-                        Patterns::Double(0.));
+                        "fraction (0 ... 0.1) of the force scale (applied "
+                        "loads or reactions, whichever is larger); a larger "
+                        "one would accept the unloaded state.",
+                        Patterns::Double(0., 0.1));
       prm.add_parameter("Absolute tolerance",
                         absolute_tolerance,
                         "Converged when |R| on the free DoFs is below this "
@@ -334,8 +335,11 @@ namespace TissueContact
             {
               std::ostringstream msg;
               msg << "the line search found no step without inverted "
-                     "elements and with a smaller residual after "
-                  << parameters.max_halvings << " halvings";
+                     "elements and with a smaller "
+                  << (use_energy ? "energy" : "residual") << " after "
+                  << parameters.max_halvings << " halvings (Newton iteration "
+                  << it << ", |R| = " << r << ", tolerance " << tolerance
+                  << ")";
               throw SolveFailed(msg.str());
             }
           u.swap(u_trial);

@@ -11,11 +11,20 @@
 // by the same depth, so the pressure at a contact vertex is p_h = 2 eps d.
 // Printed: p_h / p over all contact vertices of both surfaces, and over
 // those at least 0.15 from the blocks' sides (the rim of a free-sided
-// patch carries a boundary layer).
+// patch carries a boundary layer). The same from the run's results
+// (StepResults, what the output files hold): each pair's force on its
+// surface body and contact area (the overlap, 1 x 1, widened by the
+// bulge); the upper block receives pair 0's force and the reaction to pair
+// 1's, which together carry the load; the traction integrated over all
+// contact vertices is the sum of the pairs' forces; and the contact
+// pressure field p_a = -t_a.n_a: with both directions declared each
+// surface's triangles carry their own direction's share, so p_a is about
+// p / 2 on each surface (printed as 2 p_a / p).
 
 #include "../tests.h"
 
 #include <tissue_contact/simulation/static_simulation.h>
+#include <tissue_contact/simulation/step_results.h>
 
 #include <sstream>
 
@@ -152,6 +161,45 @@ main(int argc, char **argv)
             }
           deallog << "  pressure 2 eps d / p at " << n
                   << (interior ? " interior" : "") << " contact vertices: mean "
+                  << std::setprecision(3) << sum / n << ", min " << lo
+                  << ", max " << hi << std::setprecision(6) << std::endl;
+        }
+
+      // the run's results: forces, areas and the pressure field
+      const StepResults r(sim.problem(), u, 1.);
+      const auto       &pairs = r.contact.interactions;
+      Tensor<1, 3>      T;
+      for (unsigned int v = 0; v < vertices.size(); ++v)
+        T += r.contact.traction[v] * r.contact.area[v];
+      deallog
+        << "  pair forces on their surface bodies z / load "
+        << std::setprecision(4) << pairs[0].force[2] / load << " and "
+        << pairs[1].force[2] / load << ", upper block's share "
+        << (pairs[0].force[2] - pairs[1].force[2]) / load << ", areas "
+        << pairs[0].area << " and " << pairs[1].area << std::setprecision(6)
+        << "; traction integrated - sum of the pair forces "
+        << error_bound((T - pairs[0].force - pairs[1].force).norm() / load, -12)
+        << std::endl;
+      for (const bool interior : {false, true})
+        {
+          double       sum = 0., lo = 1e300, hi = -1e300;
+          unsigned int n = 0;
+          for (unsigned int v = 0; v < vertices.size(); ++v)
+            {
+              if (r.contact.area[v] == 0.)
+                continue;
+              const Point<3> &X = vertices[v];
+              if (interior && (std::min(X[0], 1. - X[0]) < 0.15 ||
+                               std::min(X[1], 1. - X[1]) < 0.15))
+                continue;
+              const double ratio = 2. * r.contact.pressure[v] / load;
+              sum += ratio;
+              lo = std::min(lo, ratio);
+              hi = std::max(hi, ratio);
+              ++n;
+            }
+          deallog << "  2 contact_pressure / p at " << n
+                  << (interior ? " interior" : "") << " surface vertices: mean "
                   << std::setprecision(3) << sum / n << ", min " << lo
                   << ", max " << hi << std::setprecision(6) << std::endl;
         }

@@ -97,7 +97,7 @@ namespace TissueContact
         /** Growth factor of the step after a step that took at most
          * easy_iterations Newton iterations; the step is halved after a
          * failed one, down to minimum_step. */
-        double       growth_factor   = 1.;
+        double       growth_factor   = 1.5;
         unsigned int easy_iterations = 3;
         double       minimum_step    = 1e-8;
         /** The explicit scheme stops (with an error) when the energy grows

@@ -118,6 +118,11 @@ namespace TissueContact
     {
       return assembler.energy(fe_displacement(u), 0.);
     }
+    /** What the scene asks for that is legal but likely unintended, one
+     * line each (a contact pair or obstacle with penalty 0); the drivers
+     * print them as warnings. */
+    std::vector<std::string>
+    warnings() const;
     /** Number of prescribed DoFs. */
     std::size_t
     n_prescribed() const
