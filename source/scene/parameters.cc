@@ -440,24 +440,6 @@ namespace TissueContact
 
     namespace
     {
-      /** Undo ParameterHandler's mangling of names in XML: every character
-       * other than a letter or digit is '_' and two hex digits. */
-      std::string
-      demangle(const std::string &s)
-      {
-        std::string out;
-        for (std::size_t i = 0; i < s.size(); ++i)
-          if (s[i] == '_' && i + 2 < s.size())
-            {
-              out +=
-                static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
-              i += 2;
-            }
-          else
-            out += s[i];
-        return out;
-      }
-
       /** Text for a Markdown table cell: one line, '|' escaped. */
       std::string
       cell(std::string s)
@@ -484,7 +466,7 @@ namespace TissueContact
           if (child.count("value") > 0 && child.count("documentation") > 0)
             {
               entries.push_back(&child);
-              names.push_back(demangle(name));
+              names.push_back(demangle_xml_name(name));
             }
         if (!entries.empty())
           {
@@ -503,8 +485,8 @@ namespace TissueContact
         for (const auto &[name, child] : node)
           if (!(child.count("value") > 0 && child.count("documentation") > 0))
             write_tables(child,
-                         path.empty() ? demangle(name) :
-                                        path + " / " + demangle(name),
+                         path.empty() ? demangle_xml_name(name) :
+                                        path + " / " + demangle_xml_name(name),
                          out);
       }
     } // namespace

@@ -8,6 +8,7 @@
 // state written.
 
 #include "../tests.h"
+#include "scenes.h"
 
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/base/interrupt.h>
@@ -29,44 +30,6 @@ using namespace TissueContactTests;
 
 namespace
 {
-  // a twisted beam of 3 000 tetrahedra in 8 increments
-  const char *scene = R"(
-subsection Mesh
-  set Source           = box
-  set Box upper corner = 1, 0.2, 0.2
-  set Box subdivisions = 50, 5, 2
-end
-subsection Bodies
-  subsection Body 0
-    set Model = Mooney-Rivlin
-    set C1    = 5
-    set C2    = 1
-    set a     = 50
-  end
-end
-subsection Boundary conditions
-  set Number of Dirichlet conditions = 2
-  subsection Dirichlet 0
-    set Boundary id = 0
-  end
-  subsection Dirichlet 1
-    set Boundary id     = 1
-    set Rotation axis   = 1, 0, 0
-    set Rotation center = 0, 0.1, 0.1
-    set Rotation angle  = 120
-  end
-end
-subsection Load stepping
-  set Initial increment = 0.125
-end
-subsection Output
-  set Directory        = interrupted
-  set Base name        = beam
-  set Print timing     = false
-  set Double precision = true
-end
-)";
-
   std::string
   read(const std::string &file)
   {
@@ -110,7 +73,12 @@ main(int argc, char **argv)
 
   install_interrupt_handlers();
   std::ostringstream screen;
-  StaticSimulation   sim(Scene::SceneParameters::from_string(scene), screen);
+  // the beam's files in Float64: larger, so the signal comes mid-write
+  StaticSimulation sim(Scene::SceneParameters::from_string(
+                         SceneTests::twisted_beam("interrupted") +
+                         "subsection Output\n set Double precision = true\n"
+                         "end\n"),
+                       screen);
   try
     {
       sim.run();

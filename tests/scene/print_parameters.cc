@@ -8,6 +8,7 @@
 
 #include "../tests.h"
 
+#include <tissue_contact/base/parameter_tools.h>
 #include <tissue_contact/scene/parameters.h>
 
 #include <boost/property_tree/json_parser.hpp>
@@ -23,23 +24,6 @@ using namespace TissueContactTests;
 
 namespace
 {
-  /** Undo ParameterHandler's mangling of names in XML: every character
-   * other than a letter or digit is written as '_' and two hex digits. */
-  std::string
-  demangle(const std::string &s)
-  {
-    std::string out;
-    for (std::size_t i = 0; i < s.size(); ++i)
-      if (s[i] == '_' && i + 2 < s.size())
-        {
-          out += static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
-          i += 2;
-        }
-      else
-        out += s[i];
-    return out;
-  }
-
   /** Count the entries below @p node (an entry has a "value" and a
    * "documentation" child) and collect the paths of those whose
    * documentation is empty. */
@@ -51,8 +35,9 @@ namespace
   {
     for (const auto &[name, child] : node)
       {
-        const std::string here =
-          path.empty() ? demangle(name) : path + "/" + demangle(name);
+        const std::string here = path.empty() ?
+                                   demangle_xml_name(name) :
+                                   path + "/" + demangle_xml_name(name);
         if (child.count("value") > 0 && child.count("documentation") > 0)
           {
             ++n_entries;

@@ -11,7 +11,9 @@
 // time history (dynamic) equal. A checkpoint of other parameters is
 // refused, naming the difference.
 
+#include "../dynamics/scenes.h"
 #include "../tests.h"
+#include "scenes.h"
 
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/simulation/checkpoint.h>
@@ -36,76 +38,9 @@ using namespace TissueContactTests;
 namespace
 {
   std::string
-  beam(const std::string &directory)
-  {
-    return R"(
-subsection Mesh
-  set Source           = box
-  set Box upper corner = 1, 0.2, 0.2
-  set Box subdivisions = 40, 4, 2
-end
-subsection Bodies
-  subsection Body 0
-    set Model = Mooney-Rivlin
-    set C1    = 5
-    set C2    = 1
-    set a     = 50
-  end
-end
-subsection Boundary conditions
-  set Number of Dirichlet conditions = 2
-  subsection Dirichlet 0
-    set Boundary id = 0
-  end
-  subsection Dirichlet 1
-    set Boundary id     = 1
-    set Rotation axis   = 1, 0, 0
-    set Rotation center = 0, 0.1, 0.1
-    set Rotation angle  = 120
-  end
-end
-subsection Load stepping
-  set Initial increment = 0.0625
-end
-subsection Output
-  set Directory    = )" +
-           directory + R"(
-  set Base name    = beam
-  set Print timing = false
-end
-)";
-  }
-
-  std::string
   block(const std::string &directory)
   {
-    return R"(
-subsection Mesh
-  set Box lower corner = 0, 0, 0.1
-  set Box upper corner = 0.2, 0.2, 0.3
-  set Box subdivisions = 2, 2, 2
-end
-subsection Bodies
-  subsection Body 0
-    set Model  = neo-Hookean
-    set Mu     = 100
-    set Lambda = 100
-  end
-end
-subsection Boundary conditions
-  set Number of Dirichlet conditions = 0
-end
-subsection Loads
-  set Gravity = 0, 0, -10
-end
-subsection Contact
-  set Contact surfaces    = 4
-  set Number of obstacles = 1
-  subsection Obstacle 0
-    set Type           = plane
-    set Penalty factor = 1e3
-  end
-end
+    return std::string(DynamicsTestScenes::falling_block) + R"(
 subsection Time integration
   set Analysis        = dynamic
   set Scheme          = Newmark
@@ -115,10 +50,10 @@ subsection Time integration
   set Output interval = 0.05
 end
 subsection Output
+  set Write VTU    = true
   set Directory    = )" +
            directory + R"(
   set Base name    = block
-  set Print timing = false
 end
 )";
   }
@@ -126,7 +61,8 @@ end
   std::string
   scene(const std::string &kind, const std::string &directory)
   {
-    return kind == "static" ? beam(directory) : block(directory);
+    return kind == "static" ? SceneTests::twisted_beam(directory) :
+                              block(directory);
   }
 
   /** Run the scene, from the start or from @p restart; the solution. */
@@ -303,7 +239,7 @@ main(int argc, char **argv)
       const Checkpoint checkpoint =
         Checkpoint::read(checkpoint_file("killed", "block"));
       std::string other = block("killed");
-      other.replace(other.find("set Mu     = 100"), 16, "set Mu     = 200");
+      other.replace(other.find("set Mu      = 100"), 17, "set Mu      = 200");
       check_same_parameters(
         checkpoint,
         Scene::SceneParameters::from_string(other).effective_parameters);

@@ -1,5 +1,6 @@
-// Shared by the showcase scene tests (the knee, the snakes): solve a scene
-// quietly, and log where it stopped instead of failing without output.
+// Shared by the scene tests: for the showcase ones (the knee, the snakes),
+// solve a scene quietly and log where it stopped instead of failing without
+// output; for the output ones (interrupt, restart), a twisted beam.
 #pragma once
 
 #include "../tests.h"
@@ -11,6 +12,50 @@ namespace SceneTests
 {
   using namespace dealii;
   using namespace TissueContact;
+
+  /** A Mooney-Rivlin beam 1 x 0.2 x 0.2 of 2 500 tetrahedra, clamped at
+   * x = 0, its far end twisted by 120 degrees in increments from 1/8
+   * (growing), writing to @p directory with base name "beam". */
+  inline std::string
+  twisted_beam(const std::string &directory)
+  {
+    return R"(
+subsection Mesh
+  set Source           = box
+  set Box upper corner = 1, 0.2, 0.2
+  set Box subdivisions = 50, 5, 2
+end
+subsection Bodies
+  subsection Body 0
+    set Model = Mooney-Rivlin
+    set C1    = 5
+    set C2    = 1
+    set a     = 50
+  end
+end
+subsection Boundary conditions
+  set Number of Dirichlet conditions = 2
+  subsection Dirichlet 0
+    set Boundary id = 0
+  end
+  subsection Dirichlet 1
+    set Boundary id     = 1
+    set Rotation axis   = 1, 0, 0
+    set Rotation center = 0, 0.1, 0.1
+    set Rotation angle  = 120
+  end
+end
+subsection Load stepping
+  set Initial increment = 0.125
+end
+subsection Output
+  set Directory        = )" +
+           directory + R"(
+  set Base name        = beam
+  set Print timing     = false
+end
+)";
+  }
 
   /** Solve @p sim quietly into @p statistics. If it stops, log "@p what
    * stopped: <the message>" and return false. */

@@ -14,6 +14,24 @@ namespace TissueContact
   /** Appended to the documentation of every entry that is a 3-vector. */
   inline const std::string vector_pattern_doc = " (three numbers: x, y, z)";
 
+  /** A subsection or entry name as ParameterHandler wrote it in its XML
+   * output (every character other than a letter or digit as '_' and two
+   * hex digits), back as the prm file spells it. */
+  inline std::string
+  demangle_xml_name(const std::string &s)
+  {
+    std::string out;
+    for (std::size_t i = 0; i < s.size(); ++i)
+      if (s[i] == '_' && i + 2 < s.size())
+        {
+          out += static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
+          i += 2;
+        }
+      else
+        out += s[i];
+    return out;
+  }
+
   /** The pattern of a 3-vector entry "x, y, z". */
   inline Patterns::List
   vector_pattern()
