@@ -12,7 +12,8 @@
 // area is the bottom face, widened by the bulge; with the block pressed down
 // by its clamped top face instead, the top's vertical reaction is minus the
 // contact force, the horizontal reactions balance, and the last row of
-// <base>-statistics.csv holds the same numbers.
+// <base>-statistics.csv holds the same numbers. Under the sphere, the pressure
+// field of the output: its area, center, largest and far-corner values.
 
 #include "../tests.h"
 
@@ -203,6 +204,29 @@ main(int argc, char **argv)
           << sim.problem().contact_assembler()->max_obstacle_penetration(
                sim.solution())
           << std::setprecision(6) << std::endl;
+  {
+    // the pressure field under the sphere (the output's contact_pressure):
+    // highest at the center (the corner x = y = 0 of this symmetric
+    // quarter), falling outwards; against the mean pressure load / area
+    const StepResults r(sim.problem(), sim.solution(), 1.);
+    const auto &X     = sim.problem().get_scene().triangulation.get_vertices();
+    double      p_max = 0., p_center = 0., p_edge = 0.;
+    for (unsigned int v = 0; v < X.size(); ++v)
+      if (r.contact.area[v] > 0.)
+        {
+          p_max = std::max(p_max, r.contact.pressure[v]);
+          if (X[v].norm() < 1e-12)
+            p_center = r.contact.pressure[v];
+          if (std::abs(X[v][0] - 1.) < 1e-12 && std::abs(X[v][1] - 1.) < 1e-12)
+            p_edge = r.contact.pressure[v];
+        }
+    const double area = r.contact.interactions[0].area;
+    deallog << "  pressure field: contact area " << std::setprecision(3) << area
+            << ", mean pressure load / area " << load / area
+            << ", at the center " << p_center << ", largest " << p_max
+            << ", at the far corner " << p_edge << std::setprecision(6)
+            << std::endl;
+  }
 
   // pressed by its clamped top face, 0.02 down, instead of a traction
   {
