@@ -7,12 +7,14 @@ A study file is a scene's parameter file with one extra subsection, which this
 script removes before it runs the program:
 
     subsection Study
-      # one line per swept entry: "path/to/Entry = value 1 | value 2 | ..."
+      # one line per swept entry: "path/to/Entry = value 1 | value 2 | ...";
+      # "path/A & path/B = ..." sets both entries to each value
       set Sweep     = Discretization/Polynomial degree = 1 | 2; \\
                       Mesh/Box subdivisions = 8, 2, 2 | 16, 4, 4
       set Combine   = product          # or zip (the lists side by side)
       set Quantity  = strain_energy    # a column of <base>-statistics.csv, last row
-      set Reference = finest           # the last case's quantity, or a number
+      set Reference = finest           # the last case's quantity, a number,
+                                       # or none (no error column)
       set Plot      = unknowns, error, loglog; wall_time, error, loglog
                                        # x, y, lin or loglog; one figure each
     end
@@ -81,7 +83,9 @@ def with_entries(scene, case, folder):
     """The scene text with the case's entries and its output folder set (as
     subsections appended at the end, which override earlier values)."""
     text = scene
-    for path, value in list(case.items()) + [
+    expanded = [(p.strip(), v) for path, v in case.items()
+                for p in path.split("&")]
+    for path, value in expanded + [
         ("Output/Directory", folder),
         ("Output/Base name", "case"),
         ("Output/Write VTU", "false"),
@@ -172,7 +176,8 @@ def main():
               + (f" FAILED: {row['failure']}" if status else ""), flush=True)
 
     reference = study.get("Reference", "finest")
-    ref = rows[-1]["quantity"] if reference == "finest" else float(reference)
+    ref = (rows[-1]["quantity"] if reference == "finest" else
+           None if reference == "none" else float(reference))
     for row in rows:
         q = row["quantity"]
         row["error"] = (abs(q - ref) / abs(ref)
@@ -192,8 +197,19 @@ def main():
 
     if "Plot" in study and shutil.which("gnuplot"):
         first = entries[0][0]
+
+        def column(name):
+            """A column by its name, or a swept entry by its last part."""
+            keys = dict.fromkeys(k for row in rows for k in row)
+            for key in keys:
+                if key == name or key.split("&")[0].strip().split("/")[-1] \
+                        == name:
+                    return key
+            sys.exit(f"study: Plot names '{name}', which is no column")
+
         for k, plot in enumerate(study["Plot"].split(";")):
             x, y, *scale = [s.strip() for s in plot.split(",")]
+            x, y = column(x), column(y)
             stem = os.path.join(root, name + ("" if k == 0 else f"-{k + 1}"))
             with open(stem + ".dat", "w") as f:
                 for value in entries[0][1]:
@@ -205,7 +221,8 @@ def main():
                     f.write("\n\n")
             script = (f"set terminal pngcairo size 800,560 noenhanced\n"
                       f"set output '{stem}.png'\n"
-                      f"set xlabel '{x}'\nset ylabel '{y}'\n"
+                      f"set xlabel '{x.split('&')[0].strip()}'\n"
+                      f"set ylabel '{y}'\n"
                       f"set key top right\nset grid\n"
                       + ("set logscale xy\n" if scale and scale[0] == "loglog"
                          else "")
