@@ -1,5 +1,7 @@
 #include <tissue_contact/contact/obstacle_assembler.h>
 
+#include <algorithm>
+
 namespace TissueContact
 {
   namespace Contact
@@ -164,13 +166,8 @@ namespace TissueContact
     double
     ObstacleAssembler::max_penetration(const Vector<double> &u) const
     {
-      double d = 0.;
-      for (unsigned int t = 0; t < surface.n_triangles(); ++t)
-        for (const auto &o : obstacles)
-          if (pushes(o, t))
-            for (const unsigned int v : surface.triangles[t])
-              d = std::max(d, o.obstacle.penetration(surface.position(v, u)));
-      return d;
+      const std::vector<double> d = vertex_penetrations(u);
+      return d.empty() ? 0. : *std::max_element(d.begin(), d.end());
     }
   } // namespace Contact
 } // namespace TissueContact

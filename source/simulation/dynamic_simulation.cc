@@ -62,13 +62,6 @@ namespace TissueContact
   }
 
 
-  const std::vector<double> *
-  DynamicSimulation::depth_field() const
-  {
-    return nonlinear_problem.depth_field();
-  }
-
-
   void
   DynamicSimulation::run(
     const std::function<void(const Dynamics::TimeIntegrator &,

@@ -6,6 +6,19 @@
 
 namespace TissueContact
 {
+  namespace
+  {
+    /** @p text as a literal inside a regular expression. */
+    std::string
+    regex_literal(const std::string &text)
+    {
+      return std::regex_replace(text,
+                                std::regex(R"([.^$|()\[\]{}*+?\\])"),
+                                R"(\$&)");
+    }
+  } // namespace
+
+
   void
   clear_old_results(const std::string &directory,
                     const std::string &base_name,
@@ -17,12 +30,8 @@ namespace TissueContact
     AssertThrow(!error,
                 ExcMessage("cannot create the output folder '" + directory +
                            "': " + error.message()));
-    // the base name as a literal inside the pattern
-    const std::string literal =
-      std::regex_replace(base_name,
-                         std::regex(R"([.^$|()\[\]{}*+?\\])"),
-                         R"(\$&)");
-    const std::regex ours(
+    const std::string literal = regex_literal(base_name);
+    const std::regex  ours(
       literal + R"((-surface)?(-[0-9]+\.vtu|\.pvd)(\.partial)?|)" + literal +
       R"(-(convergence|statistics|time)\.csv|)" + literal +
       R"(-parameters\.prm|)" + literal + R"(-checkpoint\.bin(\.partial)?)");
@@ -84,11 +93,8 @@ namespace TissueContact
             kept.insert(r.second);
           for (const auto &r : restart->surface_records)
             kept.insert(r.second);
-          const std::regex vtu(
-            std::regex_replace(o.base_name,
-                               std::regex(R"([.^$|()\[\]{}*+?\\])"),
-                               R"(\$&)") +
-            R"((-surface)?-[0-9]+\.vtu(\.partial)?)");
+          const std::regex vtu(regex_literal(o.base_name) +
+                               R"((-surface)?-[0-9]+\.vtu(\.partial)?)");
           for (const auto &entry : fs::directory_iterator(o.directory))
             {
               const std::string name = entry.path().filename().string();
@@ -212,7 +218,6 @@ namespace TissueContact
                    problem.displacement(u),
                    time,
                    fields);
-        last_written = time;
       }
     return results;
   }

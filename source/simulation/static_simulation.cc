@@ -5,6 +5,7 @@
 #include <tissue_contact/simulation/static_simulation.h>
 
 #include <iomanip>
+#include <memory>
 #include <sstream>
 
 
@@ -88,17 +89,20 @@ namespace TissueContact
     solver.on_cutback = [&](const double lambda, const std::string &why) {
       log.cutback(lambda, why);
     };
+    // the results of the last converged increment, for the summary
+    std::unique_ptr<StepResults> final_results;
     solver.on_increment = [&](const unsigned int    increment,
                               const double          lambda,
                               const Vector<double> &u) {
       TimerOutput::Scope scope(timer, "output");
       const bool         last = lambda >= 1. - 1e-12;
-      results.record(increment,
-                     lambda,
-                     u,
-                     lambda,
-                     results.due(increment) || last,
-                     {{"wall_time", total.wall_time()}});
+      final_results           = std::make_unique<StepResults>(
+        results.record(increment,
+                       lambda,
+                       u,
+                       lambda,
+                       results.due(increment) || last,
+                       {{"wall_time", total.wall_time()}}));
       if (!last && results.checkpoint_due(increment))
         {
           const auto &state = solver.load_state();
@@ -223,7 +227,9 @@ namespace TissueContact
             << rigid->translation(u, b) << ", rotated by "
             << rigid->rotation_vector(u, b).norm() * 180. / M_PI
             << " degrees\n";
-    StepResults(nonlinear_problem, u, 1.).print(out);
+    if (!final_results)
+      final_results = std::make_unique<StepResults>(nonlinear_problem, u, 1.);
+    final_results->print(out);
     out << "  statistics: " << results.statistics_file() << "\n";
     if (p.output.write_vtu)
       out << "  results: " << results.pvd_file() << " (open in ParaView)\n";

@@ -102,13 +102,6 @@ namespace TissueContact
         surface_records = surface;
       }
 
-      /** The number of states written. */
-      unsigned int
-      n_written() const
-      {
-        return records.size();
-      }
-
     private:
       const Discretization &disc;
       const std::string     directory, base_name;

@@ -65,10 +65,6 @@ namespace TissueContact
                       std::string       &name,
                       const bool         append = false) const;
 
-    /** The material depth for the VTU output (scenes with body pairs). */
-    const std::vector<double> *
-    depth_field() const;
-
     std::ostream        &out;
     Problem              nonlinear_problem;
     SparseMatrix<double> M;

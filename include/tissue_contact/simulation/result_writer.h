@@ -74,18 +74,10 @@ namespace TissueContact
     void
     write_checkpoint(Checkpoint &c, const std::vector<std::string> &csv_files);
 
-    /** The time of the last state written to the VTU series, or -1. */
-    double
-    last_written_time() const
-    {
-      return last_written;
-    }
-
   private:
     const Problem                           &problem;
     std::unique_ptr<Output::VtuSeriesWriter> vtu;
     Output::StatisticsFile                   statistics;
-    double                                   last_written = -1.;
   };
 
   /** Remove from @p directory the files an earlier run with base name
