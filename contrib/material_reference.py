@@ -81,3 +81,58 @@ for name, psi in models:
     print("  // %s" % name)
     print("  {%s, {%s}, %s, %s}," % (fmt(psi_v), ", ".join(fmt(p) for p in P_v),
                                       fmt(norm_A), fmt(GAH)))
+
+
+# Corotated(3, 5) (doc/theory/03-materials.md sec. 3.6): Psi = mu |U - I|^2
+# + lam/2 (tr U - 3)^2 with U = sqrt(C) has no closed form in F that sympy
+# differentiates usefully, so it is evaluated in 60-digit arithmetic without
+# the code's derivation: tr U is the largest root of the quartic
+# x^4 - 2 I1 x^2 - 8 sqrt(I3) x + I1^2 - 4 I2 = 0 (from I1 = i1^2 - 2 i2,
+# I2 = i2^2 - 2 i1 i3, I3 = i3^2 for the invariants i of U), |U - I|^2 =
+# I1 - 2 tr U + 3, and P, A are central differences with step 1e-22
+# (truncation error 1e-44).
+import mpmath as mp
+
+mp.mp.dps = 60
+
+
+def corotated_psi(F, mu=3, lam=5):
+    Fm = mp.matrix(F)
+    Cm = Fm.T * Fm
+    i1_C = Cm[0, 0] + Cm[1, 1] + Cm[2, 2]
+    tr_C2 = sum(Cm[i, j] * Cm[j, i] for i in range(3) for j in range(3))
+    i2_C = (i1_C**2 - tr_C2) / 2
+    i3_C = mp.det(Cm)
+    roots = mp.polyroots([1, 0, -2 * i1_C, -8 * mp.sqrt(i3_C), i1_C**2 - 4 * i2_C],
+                         maxsteps=200, extraprec=200)
+    trU = max(mp.re(r) for r in roots if abs(mp.im(r)) < mp.mpf(10)**-40)
+    return mu * (i1_C - 2 * trU + 3) + mp.mpf(lam) / 2 * (trU - 3)**2
+
+
+F0 = [[mp.mpf(str(F_value[i, j].p)) / F_value[i, j].q for j in range(3)]
+      for i in range(3)]
+h = mp.mpf(10)**-22
+
+
+def shifted(F, moves):
+    G_ = [row[:] for row in F]
+    for (i, j), d in moves:
+        G_[i][j] += d
+    return G_
+
+
+P_c = [(corotated_psi(shifted(F0, [((i // 3, i % 3), h)]))
+        - corotated_psi(shifted(F0, [((i // 3, i % 3), -h)]))) / (2 * h)
+       for i in range(9)]
+A_c = [[(corotated_psi(shifted(F0, [((i // 3, i % 3), h), ((j // 3, j % 3), h)]))
+         - corotated_psi(shifted(F0, [((i // 3, i % 3), h), ((j // 3, j % 3), -h)]))
+         - corotated_psi(shifted(F0, [((i // 3, i % 3), -h), ((j // 3, j % 3), h)]))
+         + corotated_psi(shifted(F0, [((i // 3, i % 3), -h), ((j // 3, j % 3), -h)])))
+        / (4 * h * h) for j in range(9)] for i in range(9)]
+norm_A = mp.sqrt(sum(a**2 for row in A_c for a in row))
+GAH = sum(int(G[i // 3, i % 3]) * A_c[i][j] * int(H[j // 3, j % 3])
+          for i in range(9) for j in range(9))
+fmt = lambda x: "%.17g" % float(x)
+print("  // corotated(3, 5)")
+print("  {%s, {%s}, %s, %s}," % (fmt(corotated_psi(F0)), ", ".join(fmt(p) for p in P_c),
+                                  fmt(norm_A), fmt(GAH)))

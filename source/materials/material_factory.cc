@@ -1,3 +1,4 @@
+#include <tissue_contact/materials/corotated.h>
 #include <tissue_contact/materials/fiber_reinforcement.h>
 #include <tissue_contact/materials/linear_elastic.h>
 #include <tissue_contact/materials/material_factory.h>
@@ -21,15 +22,16 @@ namespace TissueContact
         "Model",
         model,
         "Material model (doc/theory/03-materials.md). neo-Hookean, Saint "
-        "Venant-Kirchhoff, linear: Mu, Lambda. Mooney-Rivlin: C1, C2, a. "
+        "Venant-Kirchhoff, corotated (linear elasticity in the stretch U of "
+        "F = RU), linear: Mu, Lambda. Mooney-Rivlin: C1, C2, a. "
         "Veronda: Alpha, Beta, a. rigid: the body follows 'Rigid motion'.",
         Patterns::Selection("neo-Hookean|Mooney-Rivlin|Veronda|"
-                            "Saint Venant-Kirchhoff|linear|rigid"));
+                            "Saint Venant-Kirchhoff|corotated|linear|rigid"));
       prm.add_parameter("Mu",
                         mu,
                         "Lame shear modulus mu (stress units) of the "
-                        "neo-Hookean, Saint Venant-Kirchhoff and linear "
-                        "models; > 0 for a stable material.",
+                        "neo-Hookean, Saint Venant-Kirchhoff, corotated and "
+                        "linear models; > 0 for a stable material.",
                         Patterns::Double());
       prm.add_parameter("Lambda",
                         lambda,
@@ -134,6 +136,8 @@ namespace TissueContact
         ground = std::make_unique<Veronda>(b.alpha, b.beta, b.a);
       else if (b.model == "Saint Venant-Kirchhoff")
         ground = std::make_unique<SaintVenantKirchhoff>(b.mu, b.lambda);
+      else if (b.model == "corotated")
+        ground = std::make_unique<Corotated>(b.mu, b.lambda);
       else
         AssertThrow(false,
                     ExcMessage("unknown material model '" + b.model + "'"));

@@ -6,10 +6,13 @@
 // them (nonzero stress at rest; negative shear modulus). Finally every model
 // against an independent evaluation: Psi, P and the tangent at one F from a
 // symbolic derivation of the energies of doc/theory/03-materials.md
-// (contrib/material_reference.py, differentiating Psi(F) directly).
+// (contrib/material_reference.py, differentiating Psi(F) directly; the
+// corotated model's in 60-digit arithmetic). Corotated elasticity against
+// linear elasticity at small strain and under a 90 degree rotation.
 
 #include "../tests.h"
 
+#include <tissue_contact/materials/corotated.h>
 #include <tissue_contact/materials/fiber_reinforcement.h>
 #include <tissue_contact/materials/linear_elastic.h>
 #include <tissue_contact/materials/mooney_rivlin.h>
@@ -181,6 +184,60 @@ namespace
             << std::endl;
   }
 
+  /** Corotated against linear elasticity (doc/theory/03-materials.md sec.
+   * 3.6): the same stress to first order in a small displacement gradient
+   * (the difference falls with its square, relative to the stress linearly),
+   * zero stress under a rotation
+   * by 90 degrees where linear elasticity's is of the order of mu, and a
+   * rotated stretch loaded by 90 degrees gives the rotated stress. */
+  void
+  corotated_against_linear(const double mu, const double lambda)
+  {
+    deallog << "--- corotated against linear elasticity" << std::endl;
+    const Corotated     corotated(mu, lambda);
+    const LinearElastic linear(mu, lambda);
+    const Tensor<2, 3>  I = unit_symmetric_tensor<3>();
+    Tensor<2, 3>        H;
+    const double        h_entries[3][3] = {{0.3, -0.2, 0.5},
+                                           {0.1, -0.4, 0.2},
+                                           {0.6, 0.3, 0.1}};
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int J = 0; J < 3; ++J)
+        H[i][J] = h_entries[i][J];
+    for (const double g : {1e-2, 1e-3, 1e-4})
+      {
+        const Tensor<2, 3> F  = I + g * H;
+        const Tensor<2, 3> Pc = corotated.first_piola_kirchhoff(F, X0);
+        const Tensor<2, 3> Pl = linear.first_piola_kirchhoff(F, X0);
+        deallog << "|grad u| = " << g * H.norm()
+                << ": |P_corotated - P_linear| / |P_linear| = "
+                << std::setprecision(2) << (Pc - Pl).norm() / Pl.norm()
+                << std::setprecision(6) << std::endl;
+      }
+    // rotation by 90 degrees about z
+    Tensor<2, 3> Q;
+    Q[0][1] = -1.;
+    Q[1][0] = 1.;
+    Q[2][2] = 1.;
+    deallog << "F = Q (90 degrees): |P| / mu corotated "
+            << error_bound(corotated.first_piola_kirchhoff(Q, X0).norm() / mu)
+            << ", linear " << std::setprecision(3)
+            << linear.first_piola_kirchhoff(Q, X0).norm() / mu
+            << std::setprecision(6) << std::endl;
+    const Tensor<2, 3> F = I + 0.1 * H;
+    deallog << "F -> QF (90 degrees): |P(QF) - Q P(F)| / |P(F)| corotated "
+            << error_bound((corotated.first_piola_kirchhoff(Q * F, X0) -
+                            Q * corotated.first_piola_kirchhoff(F, X0))
+                             .norm() /
+                           corotated.first_piola_kirchhoff(F, X0).norm())
+            << ", linear " << std::setprecision(3)
+            << (linear.first_piola_kirchhoff(Q * F, X0) -
+                Q * linear.first_piola_kirchhoff(F, X0))
+                   .norm() /
+                 linear.first_piola_kirchhoff(F, X0).norm()
+            << std::setprecision(6) << std::endl;
+  }
+
   // The Veronda forms as printed in the sources, as energies of C.
   double
   invariant_I1(const Tensor<2, 3> &F)
@@ -265,6 +322,8 @@ main()
   check(Veronda(7., 8., 100.), 56., 4. * (7. * 64. - 28. + 100.));
   check(SaintVenantKirchhoff(3., 5.), 3., 5.);
   check(LinearElastic(3., 5.), 3., 5.);
+  check(Corotated(3., 5.), 3., 5.);
+  corotated_against_linear(3., 5.);
   check(FiberReinforcement(
           std::make_unique<MooneyRivlin>(5., 1., 50.), 2., 3., fiber_x),
         12.,
@@ -398,6 +457,19 @@ main()
       1.2778583916083917},
      766.21692272169298,
      289.64846121871392},
+    // corotated(3, 5)
+    {0.32325846573181843,
+     {0.89826498293655732,
+      0.78397253775359677,
+      -0.62689987300239935,
+      0.71666826042602472,
+      -0.29893925236621177,
+      0.72093683820679777,
+      -0.70621547011036823,
+      0.66054696290618009,
+      0.58591237044449407},
+     24.941569367548293,
+     52.011194148183598},
   };
   const std::unique_ptr<Material> models[] = {
     std::make_unique<NeoHookean>(3., 5.),
@@ -406,7 +478,8 @@ main()
     std::make_unique<SaintVenantKirchhoff>(3., 5.),
     std::make_unique<LinearElastic>(3., 5.),
     std::make_unique<FiberReinforcement>(
-      std::make_unique<MooneyRivlin>(5., 1., 50.), 2., 3., fiber_x)};
-  for (unsigned int m = 0; m < 6; ++m)
+      std::make_unique<MooneyRivlin>(5., 1., 50.), 2., 3., fiber_x),
+    std::make_unique<Corotated>(3., 5.)};
+  for (unsigned int m = 0; m < 7; ++m)
     compare_with_reference(*models[m], references[m]);
 }

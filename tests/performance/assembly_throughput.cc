@@ -7,6 +7,7 @@
 //   build/tests/performance/assembly_throughput [--quick]
 
 #include <tissue_contact/elasticity/elastic_assembler.h>
+#include <tissue_contact/materials/corotated.h>
 #include <tissue_contact/materials/fiber_reinforcement.h>
 #include <tissue_contact/materials/linear_elastic.h>
 #include <tissue_contact/materials/mooney_rivlin.h>
@@ -38,6 +39,7 @@ namespace
     fiber->initialize("x,y,z", "1; 0; 0", std::map<std::string, double>());
     std::vector<std::unique_ptr<Materials::Material>> m;
     m.push_back(std::make_unique<Materials::LinearElastic>(3., 5.));
+    m.push_back(std::make_unique<Materials::Corotated>(3., 5.));
     m.push_back(std::make_unique<Materials::SaintVenantKirchhoff>(3., 5.));
     m.push_back(std::make_unique<Materials::NeoHookean>(3., 5.));
     m.push_back(std::make_unique<Materials::MooneyRivlin>(5., 1., 50.));
