@@ -414,7 +414,9 @@ namespace TissueContact
       for_each_candidate(
         x,
         margin,
-        [&](const unsigned int t, const unsigned int k, const BodyContact &) {
+        [&](const unsigned int t, const unsigned int k, const BodyContact &p) {
+          if (!may_gain_energy(x, t, k, p, margin))
+            return;
           const auto                 &tv = surface.triangles[t];
           std::array<unsigned int, 7> v  = {{tets[k][0],
                                              tets[k][1],
@@ -442,6 +444,33 @@ namespace TissueContact
           for (const auto row : surface.vertex_dofs[a])
             dsp.add_entries(row, columns.begin(), columns.end(), true);
         }
+    }
+
+
+    bool
+    BodyContactAssembler::may_gain_energy(const std::vector<Point<3>> &x,
+                                          const unsigned int           t,
+                                          const unsigned int           k,
+                                          const BodyContact           &p,
+                                          const double margin) const
+    {
+      const PairGeometry geometry = pair_geometry(x, t, k);
+      const auto &[tet, tri, g]   = geometry;
+      // the triangle's outward normal points into the body it can press
+      // into: material of positive depth in front of the triangle (or
+      // within the margin behind it) can meet it within a step
+      const Tensor<1, 3> normal =
+        double(surface.outward[t]) *
+        cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]);
+      const double n = normal.norm();
+      if (!(n > 0.) || !std::isfinite(n))
+        return true;
+      for (unsigned int j = 0; j < 4; ++j)
+        if (g[j] > 0. && normal * (tet[j] - tri[0]) / n > -margin)
+          return true;
+      // a pair pressed through, with energy now, keeps its couplings
+      return !rejected(t, k, geometry) &&
+             method_of(p).energy(tet, tri, g, p.penalty) > 0.;
     }
 
 

@@ -117,7 +117,8 @@ namespace TissueContact
             {"increments", state.statistics.increments},
             {"cutbacks", state.statistics.cutbacks},
             {"newton_iterations", state.statistics.newton_iterations},
-            {"linear_iterations", state.statistics.linear_iterations}};
+            {"linear_iterations", state.statistics.linear_iterations},
+            {"tangent_shifts", state.statistics.tangent_shifts}};
           c.vectors = {{"u", u}, {"u_prev", state.u_prev}};
           results.write_checkpoint(c, {results.statistics_file(), csv});
         }
@@ -155,8 +156,9 @@ namespace TissueContact
           restart->scalar("newton_iterations");
         state.statistics.linear_iterations =
           restart->scalar("linear_iterations");
-        state.u_prev = restart->vector("u_prev", n);
-        u            = restart->vector("u", n);
+        state.statistics.tangent_shifts = restart->scalar("tangent_shifts");
+        state.u_prev                    = restart->vector("u_prev", n);
+        u                               = restart->vector("u", n);
         solver.restart_from(state);
         lambda_start = state.lambda;
         out << "Restarted from the checkpoint after increment " << restart->step
@@ -195,7 +197,12 @@ namespace TissueContact
     out << "Converged: " << statistics.increments << " increments ("
         << statistics.cutbacks << " cut back), " << statistics.newton_iterations
         << " Newton iterations, " << statistics.linear_iterations
-        << " linear iterations\n"
+        << " linear iterations"
+        << (statistics.tangent_shifts > 0 ?
+              " (" + std::to_string(statistics.tangent_shifts) +
+                " solves with a shifted tangent)" :
+              std::string())
+        << "\n"
         << "  max |u_i| = " << u_max
         << ", min J = " << assembler.min_jacobian(u_fe) << "\n"
         << "  convergence log: " << csv << "\n";

@@ -268,6 +268,39 @@ namespace TissueContact
             info.linear_iterations = linear_solver.solve(K, du, rhs, eta);
             r_previous             = r;
             eta_previous           = eta;
+            // an indefinite tangent (the penalty energy of contact is not
+            // convex) can give a du along which the energy rises: shift the
+            // free diagonal by sigma |K_ii|, sigma = 1e-4, 1e-3, ..., 1,
+            // until du descends (a Levenberg-Marquardt shift; doc/theory/
+            // 04-solver.md sec. 4.3). Past that, the residual merit below.
+            if (parameters.energy_line_search && gap_norm == 0.)
+              {
+                const auto slope = [&]() {
+                  double d = 0.;
+                  for (types::global_dof_index i = 0; i < n; ++i)
+                    if (!prescribed[i])
+                      d += R[i] * du[i];
+                  return d;
+                };
+                if (slope() >= 0.)
+                  {
+                    Vector<double> d0(n);
+                    for (types::global_dof_index i = 0; i < n; ++i)
+                      d0[i] = prescribed[i] ? 0. : std::abs(K.diag_element(i));
+                    double sigma = 0.;
+                    for (int e = -4; e <= 0 && slope() >= 0.; ++e)
+                      {
+                        const double next = std::pow(10., e);
+                        for (types::global_dof_index i = 0; i < n; ++i)
+                          K.diag_element(i) += (next - sigma) * d0[i];
+                        sigma = next;
+                        du    = 0.;
+                        info.linear_iterations +=
+                          linear_solver.solve(K, du, rhs, eta);
+                        ++statistics.tangent_shifts;
+                      }
+                  }
+              }
           }
 
           // LOOP 3: line search. Energy merit (Armijo) when asked for and

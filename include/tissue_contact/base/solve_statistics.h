@@ -15,13 +15,15 @@ namespace TissueContact
     unsigned int linear_iterations = 0;
   };
 
-  /** Summary of a whole solve: converged load increments, cut-backs, and
-   * the Newton and linear iterations they took. */
+  /** Summary of a whole solve: converged load increments, cut-backs, the
+   * Newton and linear iterations they took, and the linear solves repeated
+   * with a shifted tangent because the Newton step did not descend. */
   struct SolveStatistics
   {
     unsigned int increments        = 0;
     unsigned int cutbacks          = 0;
     unsigned int newton_iterations = 0;
     unsigned int linear_iterations = 0;
+    unsigned int tangent_shifts    = 0;
   };
 } // namespace TissueContact

@@ -273,6 +273,23 @@ namespace TissueContact
                const unsigned int  k,
                const PairGeometry &geometry) const;
 
+      /** Whether the candidate pair (triangle t, tetrahedron k) at the
+       * positions @p x is coupled in the matrix pattern: it has energy now,
+       * or a vertex of the tetrahedron with positive depth lies in front of
+       * the triangle (on its outward side) or less than @p margin behind
+       * its plane (doc/theory/05-contact.md, sec. 7). The tetrahedra under
+       * a surface triangle's neighbours, whose positive depth lies behind
+       * it, are left out: they would widen the pattern of every contact
+       * surface by its neighbourhood without ever touching it. Whatever
+       * this leaves out and later gains energy is caught by
+       * has_couplings(), which has the pattern rebuilt. */
+      bool
+      may_gain_energy(const std::vector<Point<3>> &x,
+                      const unsigned int           t,
+                      const unsigned int           k,
+                      const BodyContact           &p,
+                      const double                 margin) const;
+
       std::array<types::global_dof_index, 21>
       pair_dofs(const unsigned int t, const unsigned int k) const;
 
