@@ -123,6 +123,32 @@ namespace TissueContact
                         n_pairs,
                         "How many subsections 'Pair 0', ... follow (0..64).",
                         Patterns::Integer(0, 64));
+      prm.add_parameter(
+        "Augmented Lagrangian",
+        augmented_lagrangian,
+        "Static runs: after each converged load increment update every "
+        "contact vertex's multiplier lambda (the pressure it carries) to "
+        "max(0, lambda + eps_p d), accelerated (Anderson), and solve the "
+        "increment again, until the contact holds within 'Penetration "
+        "tolerance': no vertex penetrates an obstacle by more, and no "
+        "multiplier pushes a vertex that lifted off by more "
+        "(doc/theory/05-contact.md sec. 6.1). The penetration then no longer "
+        "depends on the Penalty factor, which can be moderate. Obstacles "
+        "only: body pairs keep the plain penalty.",
+        Patterns::Bool());
+      prm.add_parameter("Penetration tolerance",
+                        penetration_tolerance,
+                        "Largest violation of the obstacle contact (length "
+                        "units: a penetration, or the gap of a vertex whose "
+                        "multiplier still pushes) the augmented-Lagrangian "
+                        "loop accepts; > 0.",
+                        Patterns::Double(0.));
+      prm.add_parameter("Maximum multiplier updates",
+                        max_multiplier_updates,
+                        "Augmented-Lagrangian updates per load increment "
+                        "(1..1000); past them the increment is kept with a "
+                        "warning in the log.",
+                        Patterns::Integer(1, 1000));
       for (unsigned int i = 0; i < obstacles.size(); ++i)
         {
           prm.enter_subsection("Obstacle " + std::to_string(i));
@@ -166,6 +192,22 @@ namespace TissueContact
                                ": Penalty factor " +
                                Utilities::to_string(pairs[i].penalty) +
                                " is out of range: it must be below 1e100"));
+      if (augmented_lagrangian)
+        {
+          AssertThrow(!obstacles.empty(),
+                      ExcMessage("Contact: Augmented Lagrangian = true acts "
+                                 "on obstacles, and none is declared (body "
+                                 "pairs keep the plain penalty)"));
+          AssertThrow(penetration_tolerance > 0.,
+                      ExcMessage("Contact: the augmented-Lagrangian loop "
+                                 "needs a Penetration tolerance > 0"));
+          for (unsigned int i = 0; i < obstacles.size(); ++i)
+            AssertThrow(obstacles[i].penalty > 0.,
+                        ExcMessage("Contact/Obstacle " + std::to_string(i) +
+                                   ": the augmented-Lagrangian loop needs a "
+                                   "Penalty factor > 0 (its multipliers "
+                                   "grow by Penalty factor x penetration)"));
+        }
       AssertThrow(!enabled() || !surfaces.empty(),
                   ExcMessage("Contact: obstacles or pairs are declared but no "
                              "Contact surfaces; list the boundary ids that "

@@ -1,6 +1,10 @@
 #include <tissue_contact/contact/obstacle_assembler.h>
 
+#include <deal.II/lac/full_matrix.h>
+
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace TissueContact
 {
@@ -11,7 +15,60 @@ namespace TissueContact
       const std::vector<ObstacleContact> &obstacles)
       : surface(surface)
       , obstacles(obstacles)
+      , multipliers(obstacles.size(), std::vector<double>(surface.X.size(), 0.))
     {}
+
+
+    bool
+    ObstacleAssembler::has_multiplier(const unsigned int o,
+                                      const unsigned int t) const
+    {
+      for (const unsigned int v : surface.triangles[t])
+        if (multipliers[o][v] > 0.)
+          return true;
+      return false;
+    }
+
+
+    template <typename Number>
+    Number
+    ObstacleAssembler::triangle_energy(
+      const unsigned int                     o,
+      const unsigned int                     t,
+      const std::array<Point<3, Number>, 3> &tri) const
+    {
+      const ObstacleContact &c = obstacles[o];
+      if (!has_multiplier(o, t))
+        return obstacle_energy(c.obstacle, tri, c.penalty);
+      const auto &v = surface.triangles[t];
+      return augmented_obstacle_energy(
+        c.obstacle,
+        tri,
+        c.penalty,
+        {{multipliers[o][v[0]], multipliers[o][v[1]], multipliers[o][v[2]]}});
+    }
+
+
+    double
+    ObstacleAssembler::contact_area(const unsigned int             o,
+                                    const unsigned int             t,
+                                    const std::array<Point<3>, 3> &tri) const
+    {
+      if (!has_multiplier(o, t))
+        return obstacle_contact_area(obstacles[o].obstacle, tri);
+      // with multipliers the pressure lambda + eps d acts where phi > 0
+      std::array<double, 3> phi;
+      for (unsigned int k = 0; k < 3; ++k)
+        phi[k] = obstacles[o].obstacle.penetration(tri[k]) +
+                 multipliers[o][surface.triangles[t][k]] / obstacles[o].penalty;
+      std::array<Point<3>, 4> x;
+      std::array<double, 4>   d;
+      const unsigned int      n    = non_negative_part(tri, phi, x, d);
+      double                  area = 0.;
+      for (unsigned int k = 1; k + 1 < n; ++k)
+        area += 0.5 * cross_product_3d(x[k] - x[0], x[k + 1] - x[0]).norm();
+      return area;
+    }
 
 
     bool
@@ -36,16 +93,14 @@ namespace TissueContact
               const ObstacleContact &o = obstacles[i];
               if (!pushes(o, t))
                 continue;
-              bool penetrates = false;
+              bool penetrates = has_multiplier(i, t);
               for (const auto &p : tri)
                 penetrates = penetrates || o.obstacle.penetration(p) > 0.;
               if (penetrates)
                 f(t,
                   i,
                   ad_derivatives(
-                    [&](const auto &T) {
-                      return obstacle_energy(o.obstacle, T, o.penalty);
-                    },
+                    [&](const auto &T) { return triangle_energy(i, t, T); },
                     with_hessian,
                     tri));
             }
@@ -88,9 +143,7 @@ namespace TissueContact
           const std::array<Point<3>, 3> tri = surface.triangle(t, u);
           for (unsigned int i = 0; i < obstacles.size(); ++i)
             if (pushes(obstacles[i], t))
-              W[i] += obstacle_energy<double>(obstacles[i].obstacle,
-                                              tri,
-                                              obstacles[i].penalty);
+              W[i] += triangle_energy<double>(i, t, tri);
         }
       return W;
     }
@@ -135,9 +188,7 @@ namespace TissueContact
                                surface_force[surface.triangles[t][a]][c] -=
                                  d.gradient[3 * a + c];
                              }
-                         r.area +=
-                           obstacle_contact_area(obstacles[o].obstacle,
-                                                 surface.triangle(t, u));
+                         r.area += contact_area(o, t, surface.triangle(t, u));
                          r.energy += d.energy;
                          for (const unsigned int v : surface.triangles[t])
                            r.max_penetration =
@@ -160,6 +211,112 @@ namespace TissueContact
               d[v] =
                 std::max(d[v], o.obstacle.penetration(surface.position(v, u)));
       return d;
+    }
+
+
+    double
+    ObstacleAssembler::update_multipliers(const Vector<double> &u,
+                                          const double          tolerance,
+                                          const bool            first)
+    {
+      // the Uzawa map G(lambda)_a = max(0, lambda_a + eps d_a) for each
+      // vertex an obstacle pushes; f = G(lambda) - lambda moves lambda_a /
+      // eps by the constraint's violation there: the penetration where
+      // the vertex carries pressure, the gap where its multiplier still
+      // pushes
+      const std::vector<double> lambda    = multiplier_values();
+      std::vector<double>       G         = lambda;
+      double                    violation = 0.;
+      const unsigned int        n_v       = surface.X.size();
+      for (unsigned int o = 0; o < obstacles.size(); ++o)
+        {
+          const double eps = obstacles[o].penalty;
+          for (unsigned int t = 0; t < surface.n_triangles(); ++t)
+            if (pushes(obstacles[o], t))
+              for (const unsigned int v : surface.triangles[t])
+                {
+                  const double d =
+                    obstacles[o].obstacle.penetration(surface.position(v, u));
+                  double &g = G[o * n_v + v];
+                  g         = std::max(0., lambda[o * n_v + v] + eps * d);
+                  violation = std::max(violation,
+                                       std::abs(g - lambda[o * n_v + v]) / eps);
+                }
+        }
+      if (first)
+        history.clear();
+      if (!(violation > tolerance))
+        return violation;
+      std::vector<double> f(G.size());
+      for (unsigned int i = 0; i < f.size(); ++i)
+        f[i] = G[i] - lambda[i];
+      // Anderson acceleration of the fixed-point iteration (memory
+      // max_history): lambda_new = G_k - dG gamma, gamma minimizing
+      // |f_k - dF gamma| over the differences of the last iterates; plain
+      // Uzawa (lambda_new = G_k) at the first update of an increment. The
+      // projection onto lambda >= 0 follows.
+      std::vector<double> next = G;
+      const unsigned int  m    = history.size();
+      if (m > 0)
+        {
+          FullMatrix<double>               A(m, m);
+          Vector<double>                   b(m), gamma(m);
+          std::vector<std::vector<double>> dF(m, std::vector<double>(f.size())),
+            dG(m, std::vector<double>(f.size()));
+          for (unsigned int j = 0; j < m; ++j)
+            for (unsigned int i = 0; i < f.size(); ++i)
+              {
+                dF[j][i] = f[i] - history[j].f[i];
+                dG[j][i] = G[i] - history[j].G[i];
+              }
+          double trace = 0.;
+          for (unsigned int j = 0; j < m; ++j)
+            {
+              for (unsigned int l = 0; l < m; ++l)
+                for (unsigned int i = 0; i < f.size(); ++i)
+                  A(j, l) += dF[j][i] * dF[l][i];
+              for (unsigned int i = 0; i < f.size(); ++i)
+                b[j] += dF[j][i] * f[i];
+              trace += A(j, j);
+            }
+          for (unsigned int j = 0; j < m; ++j)
+            A(j, j) += 1e-12 * trace + 1e-300;
+          A.gauss_jordan();
+          A.vmult(gamma, b);
+          for (unsigned int j = 0; j < m; ++j)
+            for (unsigned int i = 0; i < f.size(); ++i)
+              next[i] -= gamma[j] * dG[j][i];
+          for (double &x : next)
+            x = std::max(0., x);
+        }
+      history.push_front({G, f});
+      if (history.size() > max_history)
+        history.pop_back();
+      set_multiplier_values(next);
+      return violation;
+    }
+
+
+    std::vector<double>
+    ObstacleAssembler::multiplier_values() const
+    {
+      std::vector<double> values;
+      for (const auto &m : multipliers)
+        values.insert(values.end(), m.begin(), m.end());
+      return values;
+    }
+
+
+    void
+    ObstacleAssembler::set_multiplier_values(const std::vector<double> &values)
+    {
+      AssertThrow(values.size() == obstacles.size() * surface.X.size(),
+                  ExcMessage("the contact multipliers read do not fit the "
+                             "obstacles and the mesh"));
+      for (unsigned int o = 0; o < obstacles.size(); ++o)
+        std::copy(values.begin() + o * surface.X.size(),
+                  values.begin() + (o + 1) * surface.X.size(),
+                  multipliers[o].begin());
     }
 
 

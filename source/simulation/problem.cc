@@ -160,6 +160,56 @@ namespace TissueContact
   }
 
 
+  bool
+  Problem::update_multipliers(const Vector<double> &u, const unsigned int k)
+  {
+    const auto &c = scene.parameters.contact;
+    if (!c.augmented_lagrangian || !contact ||
+        contact->obstacle_assembler() == nullptr)
+      return false;
+    const double tolerance = c.penetration_tolerance;
+    auto        *obstacles = contact->obstacle_assembler();
+    if (k >= c.max_multiplier_updates)
+      {
+        // measure without changing: the tolerance 0 would update
+        const auto   saved = obstacles->multiplier_values();
+        const double violation =
+          obstacles->update_multipliers(fe_displacement(u), 0., false);
+        obstacles->set_multiplier_values(saved);
+        if (violation > tolerance)
+          multiplier_warning_lines.push_back(
+            "after " + std::to_string(k) +
+            " multiplier updates the obstacle contact is violated by " +
+            Utilities::to_string(violation) + " (Penetration tolerance " +
+            Utilities::to_string(tolerance) +
+            "); the increment is kept. More Maximum multiplier updates or a "
+            "larger Penalty factor converge faster");
+        return false;
+      }
+    return obstacles->update_multipliers(fe_displacement(u),
+                                         tolerance,
+                                         k == 0) > tolerance;
+  }
+
+
+  std::vector<double>
+  Problem::multipliers() const
+  {
+    return contact && contact->obstacle_assembler() != nullptr &&
+               scene.parameters.contact.augmented_lagrangian ?
+             contact->obstacle_assembler()->multiplier_values() :
+             std::vector<double>();
+  }
+
+
+  void
+  Problem::set_multipliers(const std::vector<double> &values)
+  {
+    if (!values.empty())
+      contact->obstacle_assembler()->set_multiplier_values(values);
+  }
+
+
   std::vector<std::string>
   Problem::warnings() const
   {
@@ -171,6 +221,10 @@ namespace TissueContact
                          " has Penalty factor 0: it pushes nothing and the "
                          "bodies pass through each other (a baseline "
                          "without contact; else give it a penalty > 0)");
+    if (c.augmented_lagrangian && !c.pairs.empty())
+      result.push_back("Contact/Augmented Lagrangian acts on the obstacles "
+                       "only: the body pairs keep the plain penalty and its "
+                       "penetration");
     for (unsigned int i = 0; i < c.obstacles.size(); ++i)
       if (c.obstacles[i].penalty == 0.)
         result.push_back("Contact/Obstacle " + std::to_string(i) +

@@ -118,8 +118,14 @@ namespace TissueContact
             {"cutbacks", state.statistics.cutbacks},
             {"newton_iterations", state.statistics.newton_iterations},
             {"linear_iterations", state.statistics.linear_iterations},
-            {"tangent_shifts", state.statistics.tangent_shifts}};
+            {"tangent_shifts", state.statistics.tangent_shifts},
+            {"multiplier_updates", state.statistics.multiplier_updates}};
           c.vectors = {{"u", u}, {"u_prev", state.u_prev}};
+          const std::vector<double> multipliers =
+            nonlinear_problem.multipliers();
+          if (!multipliers.empty())
+            c.vectors["multipliers"] =
+              Vector<double>(multipliers.begin(), multipliers.end());
           results.write_checkpoint(c, {results.statistics_file(), csv});
         }
       // progress: the time left extrapolated linearly in the load factor
@@ -157,8 +163,18 @@ namespace TissueContact
         state.statistics.linear_iterations =
           restart->scalar("linear_iterations");
         state.statistics.tangent_shifts = restart->scalar("tangent_shifts");
-        state.u_prev                    = restart->vector("u_prev", n);
-        u                               = restart->vector("u", n);
+        state.statistics.multiplier_updates =
+          restart->scalar("multiplier_updates");
+        const auto n_multipliers = nonlinear_problem.multipliers().size();
+        if (n_multipliers > 0)
+          {
+            const Vector<double> m =
+              restart->vector("multipliers", n_multipliers);
+            nonlinear_problem.set_multipliers(
+              std::vector<double>(m.begin(), m.end()));
+          }
+        state.u_prev = restart->vector("u_prev", n);
+        u            = restart->vector("u", n);
         solver.restart_from(state);
         lambda_start = state.lambda;
         out << "Restarted from the checkpoint after increment " << restart->step
@@ -202,10 +218,16 @@ namespace TissueContact
               " (" + std::to_string(statistics.tangent_shifts) +
                 " solves with a shifted tangent)" :
               std::string())
+        << (statistics.multiplier_updates > 0 ?
+              ", " + std::to_string(statistics.multiplier_updates) +
+                " augmented-Lagrangian updates" :
+              std::string())
         << "\n"
         << "  max |u_i| = " << u_max
         << ", min J = " << assembler.min_jacobian(u_fe) << "\n"
         << "  convergence log: " << csv << "\n";
+    for (const auto &w : nonlinear_problem.multiplier_warnings())
+      out << "  warning: " << w << "\n";
     if (contact && !p.contact.obstacles.empty())
       out << "  obstacle force on the bodies " << contact->obstacle_force(u_fe)
           << ", max penetration " << contact->max_obstacle_penetration(u_fe)

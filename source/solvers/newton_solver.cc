@@ -473,8 +473,12 @@ namespace TissueContact
                 u_trial[t.first] = t.second;
               used_prediction = true;
             }
-          // one nonlinear solve; the reason of its failure, empty if it
-          // converged
+          // one nonlinear solve, and again after every outer
+          // (augmented-Lagrangian) update the problem makes; the reason of
+          // its failure, empty if it converged. A failed attempt restores
+          // the multipliers of the increment's start.
+          const std::vector<double> multipliers_at_start =
+            problem.multipliers();
           const auto attempt = [&]() -> std::string {
             try
               {
@@ -484,9 +488,21 @@ namespace TissueContact
                          statistics.increments + 1,
                          statistics,
                          timer);
+                for (unsigned int k = 0; problem.update_multipliers(u_trial, k);
+                     ++k)
+                  {
+                    ++statistics.multiplier_updates;
+                    solve_at(problem,
+                             u_trial,
+                             lambda_new,
+                             statistics.increments + 1,
+                             statistics,
+                             timer);
+                  }
               }
             catch (const SolveFailed &e)
               {
+                problem.set_multipliers(multipliers_at_start);
                 return e.what();
               }
             return "";

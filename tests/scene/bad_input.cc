@@ -237,6 +237,11 @@ main(int argc, char **argv)
   run("zero obstacle penalty", plane + "  set Penalty factor = 0\n end\nend\n");
   run("sphere of radius zero",
       plane + "  set Type = sphere\n  set Radius = 0\n end\nend\n");
+  run("augmented Lagrangian without an obstacle",
+      "subsection Contact\n set Augmented Lagrangian = true\nend\n");
+  run("augmented Lagrangian with a zero penalty",
+      plane + "  set Penalty factor = 0\n end\n"
+              " set Augmented Lagrangian = true\nend\n");
   run("zero pair penalty",
       "subsection Contact\n set Contact surfaces = 4\n"
       " set Number of pairs = 1\n subsection Pair 0\n"

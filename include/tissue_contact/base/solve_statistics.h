@@ -16,8 +16,9 @@ namespace TissueContact
   };
 
   /** Summary of a whole solve: converged load increments, cut-backs, the
-   * Newton and linear iterations they took, and the linear solves repeated
-   * with a shifted tangent because the Newton step did not descend. */
+   * Newton and linear iterations they took, the linear solves repeated
+   * with a shifted tangent because the Newton step did not descend, and
+   * the augmented-Lagrangian updates. */
   struct SolveStatistics
   {
     unsigned int increments        = 0;
@@ -25,5 +26,7 @@ namespace TissueContact
     unsigned int newton_iterations = 0;
     unsigned int linear_iterations = 0;
     unsigned int tangent_shifts    = 0;
+    /** Augmented-Lagrangian updates, each followed by another solve. */
+    unsigned int multiplier_updates = 0;
   };
 } // namespace TissueContact

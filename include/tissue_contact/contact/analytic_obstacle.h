@@ -52,27 +52,26 @@ namespace TissueContact
     };
 
     /**
-     * The part of a boundary triangle on the obstacle's side, where the
-     * linear interpolant @f$d_h@f$ of the vertex penetrations is
-     * non-negative: the clipped polygon's vertices @p x and their
-     * @f$d_h@f$ values @p d; returns their number (0 if fewer than 3).
+     * The part of a triangle @p tri where the linear interpolant of the
+     * vertex values @p value is non-negative: the clipped polygon's
+     * vertices @p x and their interpolated values @p d; returns their
+     * number (0 if fewer than 3).
      */
     template <typename Number>
     unsigned int
-    penetrating_part(const AnalyticObstacle                &obstacle,
-                     const std::array<Point<3, Number>, 3> &tri,
-                     std::array<Point<3, Number>, 4>       &x,
-                     std::array<Number, 4>                 &d)
+    non_negative_part(const std::array<Point<3, Number>, 3> &tri,
+                      const std::array<Number, 3>           &value,
+                      std::array<Point<3, Number>, 4>       &x,
+                      std::array<Number, 4>                 &d)
     {
       using Traits   = Differentiation::AD::ADNumberTraits<Number>;
       unsigned int n = 0;
       for (unsigned int k = 0; k < 3; ++k)
         {
           const Point<3, Number> &p = tri[k], &q = tri[(k + 1) % 3];
-          const Number            dp = obstacle.penetration(p),
-                       dq            = obstacle.penetration(q);
-          const bool p_in            = Traits::get_scalar_value(dp) >= 0.;
-          const bool q_in            = Traits::get_scalar_value(dq) >= 0.;
+          const Number           &dp = value[k], &dq = value[(k + 1) % 3];
+          const bool              p_in = Traits::get_scalar_value(dp) >= 0.;
+          const bool              q_in = Traits::get_scalar_value(dq) >= 0.;
           if (p_in)
             {
               x[n]   = p;
@@ -86,6 +85,26 @@ namespace TissueContact
             }
         }
       return n < 3 ? 0 : n;
+    }
+
+    /**
+     * The part of a boundary triangle on the obstacle's side, where the
+     * linear interpolant @f$d_h@f$ of the vertex penetrations is
+     * non-negative (non_negative_part() of the penetrations).
+     */
+    template <typename Number>
+    unsigned int
+    penetrating_part(const AnalyticObstacle                &obstacle,
+                     const std::array<Point<3, Number>, 3> &tri,
+                     std::array<Point<3, Number>, 4>       &x,
+                     std::array<Number, 4>                 &d)
+    {
+      return non_negative_part(tri,
+                               {{obstacle.penetration(tri[0]),
+                                 obstacle.penetration(tri[1]),
+                                 obstacle.penetration(tri[2])}},
+                               x,
+                               d);
     }
 
     /**
@@ -108,6 +127,44 @@ namespace TissueContact
       if (n == 0)
         return Number(0.);
       return 0.5 * eps_p * integral_of_square(x, d, n, unit_normal(tri));
+    }
+
+    /**
+     * The augmented-Lagrangian energy of a boundary triangle against an
+     * obstacle (doc/theory/05-contact.md, sec. 6.1), with the vertex
+     * multipliers @p lambda held fixed:
+     * @f$W = \frac{\varepsilon_p}{2}\int_{T,\,\varphi_h>0}\varphi_h^2\,da
+     *      - \frac{1}{2\varepsilon_p}\int_T \lambda_h^2\,da@f$ with
+     * @f$\varphi = d + \lambda/\varepsilon_p@f$, the interpolants linear
+     * over the triangle. Where @f$\varphi_h > 0@f$ on all of T the
+     * integrand is @f$\lambda_h d_h + \frac{\varepsilon_p}{2}d_h^2@f$:
+     * the pressure @f$\lambda + \varepsilon_p d@f$. With @p lambda zero it
+     * is obstacle_energy(). @f$C^1@f$ in the positions: the penalty's kink
+     * moves from @f$d = 0@f$ to @f$d = -\lambda/\varepsilon_p@f$.
+     */
+    template <typename Number>
+    Number
+    augmented_obstacle_energy(const AnalyticObstacle                &obstacle,
+                              const std::array<Point<3, Number>, 3> &tri,
+                              const double                           eps_p,
+                              const std::array<double, 3>           &lambda)
+    {
+      std::array<Number, 3> phi;
+      for (unsigned int k = 0; k < 3; ++k)
+        phi[k] = obstacle.penetration(tri[k]) + lambda[k] / eps_p;
+      std::array<Point<3, Number>, 4> x;
+      std::array<Number, 4>           v;
+      const unsigned int              n = non_negative_part(tri, phi, x, v);
+      Number                          W(0.);
+      if (n > 0)
+        W = 0.5 * eps_p * integral_of_square(x, v, n, unit_normal(tri));
+      const Tensor<1, 3, Number> a =
+        cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]);
+      const Number area = 0.5 * std::sqrt(a * a);
+      const double l1   = lambda[0] + lambda[1] + lambda[2];
+      const double l2 =
+        lambda[0] * lambda[0] + lambda[1] * lambda[1] + lambda[2] * lambda[2];
+      return W - area / (24. * eps_p) * (l2 + l1 * l1);
     }
 
     /** The area of penetrating_part(): where the penalty of

@@ -127,6 +127,13 @@ namespace TissueContact
       Tensor<1, 3>
       obstacle_force(const Vector<double> &u) const;
 
+      /** The obstacles' augmented-Lagrangian multipliers
+       * (ObstacleAssembler; nothing without obstacles). */
+      ObstacleAssembler *
+      obstacle_assembler()
+      {
+        return obstacles.get();
+      }
       /** ObstacleAssembler::max_penetration() (0 without obstacles). */
       double
       max_obstacle_penetration(const Vector<double> &u) const;

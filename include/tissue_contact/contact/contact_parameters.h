@@ -77,6 +77,15 @@ namespace TissueContact
       std::vector<ObstacleContact> obstacles;
       std::vector<BodyContact>     pairs;
       unsigned int                 n_obstacles = 0, n_pairs = 0;
+      /** The augmented-Lagrangian (Uzawa) loop on the obstacles
+       * (doc/theory/05-contact.md, sec. 6.1): after each converged load
+       * increment the multipliers take the contact pressure and the
+       * increment is solved again, until no vertex penetrates an obstacle
+       * by more than penetration_tolerance or max_multiplier_updates
+       * updates are spent. */
+      bool         augmented_lagrangian   = false;
+      double       penetration_tolerance  = 1e-6;
+      unsigned int max_multiplier_updates = 20;
       /** The body each material id belongs to, where it is not its own
        * (set by the scene from the bodies' "Contact body" entries): the
        * bodies of pairs and obstacles are these ids. */

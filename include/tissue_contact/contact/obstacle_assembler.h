@@ -8,6 +8,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <array>
+#include <deque>
 #include <vector>
 
 namespace TissueContact
@@ -60,9 +61,61 @@ namespace TissueContact
       double
       max_penetration(const Vector<double> &u) const;
 
+      /**
+       * The augmented-Lagrangian (Uzawa) update (doc/theory/05-contact.md,
+       * sec. 6.1) at the converged @p u: every vertex an obstacle pushes
+       * gets @f$\lambda_a \leftarrow \max(0, \lambda_a +
+       * \varepsilon_p d_a)@f$, if that moves some @f$\lambda_a /
+       * \varepsilon_p@f$ by more than @p tolerance (a penetration where
+       * the vertex carries pressure, a gap where its multiplier still
+       * pushes). Returns that largest move, the constraint's violation;
+       * the multipliers changed iff it exceeds @p tolerance.
+       */
+      double
+      update_multipliers(const Vector<double> &u,
+                         const double          tolerance,
+                         const bool            first);
+      /** The multipliers of all obstacles, one after the other (vertex
+       * order), to be saved and restored (a cut-back, a checkpoint). */
+      std::vector<double>
+      multiplier_values() const;
+      void
+      set_multiplier_values(const std::vector<double> &values);
+
     private:
       const ContactSurface        &surface;
       std::vector<ObstacleContact> obstacles;
+      /** Per obstacle, per vertex: the multiplier @f$\lambda_a@f$
+       * (pressure units), zero unless the augmented Lagrangian is on. */
+      std::vector<std::vector<double>> multipliers;
+      /** The last Uzawa iterates of this increment, newest first: G(lambda)
+       * and G(lambda) - lambda (the Anderson acceleration's memory). */
+      struct Iterate
+      {
+        std::vector<double> G, f;
+      };
+      std::deque<Iterate>           history;
+      static constexpr unsigned int max_history = 5;
+
+      /** The energy of triangle @p t against obstacles[@p o] at the
+       * vertex positions @p tri: the penalty, plus the multiplier term
+       * where a vertex of the triangle has a multiplier. */
+      template <typename Number>
+      Number
+      triangle_energy(const unsigned int                     o,
+                      const unsigned int                     t,
+                      const std::array<Point<3, Number>, 3> &tri) const;
+      /** The area of triangle @p t (at @p tri) where obstacles[@p o]
+       * presses: its penetrating part, or with multipliers the part where
+       * the pressure lambda + eps_p d is positive. */
+      double
+      contact_area(const unsigned int             o,
+                   const unsigned int             t,
+                   const std::array<Point<3>, 3> &tri) const;
+      /** Whether triangle @p t has a nonzero multiplier for obstacle
+       * @p o. */
+      bool
+      has_multiplier(const unsigned int o, const unsigned int t) const;
 
       /** Whether obstacle @p o pushes triangle @p t. */
       bool

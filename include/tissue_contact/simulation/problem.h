@@ -172,6 +172,25 @@ namespace TissueContact
      * AMG's near-null space. */
     std::vector<Vector<double>>
     near_null_space() const override;
+    /** The augmented-Lagrangian update of the obstacles' multipliers
+     * (ObstacleAssembler::update_multipliers(), Contact/Augmented
+     * Lagrangian): true if some vertex penetrated by more than the
+     * tolerance and @p k < Maximum multiplier updates. Records the
+     * increments that ended above the tolerance (multiplier_warnings()). */
+    bool
+    update_multipliers(const Vector<double> &u, const unsigned int k) override;
+    std::vector<double>
+    multipliers() const override;
+    void
+    set_multipliers(const std::vector<double> &values) override;
+    /** Load steps whose penetration stayed above the augmented-Lagrangian
+     * tolerance after Maximum multiplier updates, with it. */
+    const std::vector<std::string> &
+    multiplier_warnings() const
+    {
+      return multiplier_warning_lines;
+    }
+
     /** Elastic potential (with the loads' work) plus contact energy. */
     double
     energy(const Vector<double> &u, const double load_factor) const override;
@@ -189,8 +208,9 @@ namespace TissueContact
      * margin of half the smallest cell diameter, so that nearby pairs do
      * not force a rebuild at every iteration). */
     void
-                 rebuild_sparsity_pattern(const Vector<double> &u);
-    unsigned int n_pattern_builds = 0;
+                             rebuild_sparsity_pattern(const Vector<double> &u);
+    unsigned int             n_pattern_builds = 0;
+    std::vector<std::string> multiplier_warning_lines;
 
   public:
     /** How often the sparsity pattern was built (once at the start, again

@@ -91,6 +91,33 @@ namespace TissueContact
       {
         return {};
       }
+
+      /**
+       * An outer (augmented-Lagrangian) update after a converged solve at
+       * @p u, the @p k-th of this load increment (k = 0, 1, ...): returns
+       * true if the problem changed (its multipliers took a new value) and
+       * the increment must be solved again. The default: no outer loop.
+       */
+      virtual bool
+      update_multipliers(const Vector<double> &u, const unsigned int k)
+      {
+        (void)u;
+        (void)k;
+        return false;
+      }
+
+      /** The state update_multipliers() changes, to be restored when an
+       * increment is cut back (empty: none). */
+      virtual std::vector<double>
+      multipliers() const
+      {
+        return {};
+      }
+      virtual void
+      set_multipliers(const std::vector<double> &values)
+      {
+        (void)values;
+      }
     };
 
     /**
@@ -152,6 +179,21 @@ namespace TissueContact
       near_null_space() const override
       {
         return inner.near_null_space();
+      }
+      bool
+      update_multipliers(const Vector<double> &u, const unsigned int k) override
+      {
+        return inner.update_multipliers(u, k);
+      }
+      std::vector<double>
+      multipliers() const override
+      {
+        return inner.multipliers();
+      }
+      void
+      set_multipliers(const std::vector<double> &values) override
+      {
+        inner.set_multipliers(values);
       }
 
     protected:
