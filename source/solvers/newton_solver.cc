@@ -201,7 +201,9 @@ namespace TissueContact
                               "Newton iteration");
           const auto [r, reaction] = norms(R);
           if (!std::isfinite(r))
-            throw SolveFailed("the residual is not finite");
+            throw SolveFailed(
+              "the residual is not finite: an element is crushed to zero "
+              "volume (J = 0) or its material law overflowed");
           const double tolerance =
             std::max(parameters.absolute_tolerance,
                      parameters.residual_tolerance * std::max(f_ext, reaction));
