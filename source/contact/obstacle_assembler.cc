@@ -63,11 +63,7 @@ namespace TissueContact
                  multipliers[o][surface.triangles[t][k]] / obstacles[o].penalty;
       std::array<Point<3>, 4> x;
       std::array<double, 4>   d;
-      const unsigned int      n    = non_negative_part(tri, phi, x, d);
-      double                  area = 0.;
-      for (unsigned int k = 1; k + 1 < n; ++k)
-        area += 0.5 * cross_product_3d(x[k] - x[0], x[k + 1] - x[0]).norm();
-      return area;
+      return polygon_area(x, non_negative_part(tri, phi, x, d));
     }
 
 

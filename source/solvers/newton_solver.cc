@@ -482,24 +482,22 @@ namespace TissueContact
           const std::vector<double> multipliers_at_start =
             problem.multipliers();
           const auto attempt = [&]() -> std::string {
+            const auto solve = [&]() {
+              solve_at(problem,
+                       u_trial,
+                       lambda_new,
+                       statistics.increments + 1,
+                       statistics,
+                       timer);
+            };
             try
               {
-                solve_at(problem,
-                         u_trial,
-                         lambda_new,
-                         statistics.increments + 1,
-                         statistics,
-                         timer);
+                solve();
                 for (unsigned int k = 0; problem.update_multipliers(u_trial, k);
                      ++k)
                   {
                     ++statistics.multiplier_updates;
-                    solve_at(problem,
-                             u_trial,
-                             lambda_new,
-                             statistics.increments + 1,
-                             statistics,
-                             timer);
+                    solve();
                   }
               }
             catch (const SolveFailed &e)

@@ -75,71 +75,82 @@ namespace
              message;
   }
 
-  /** A static scene: run it into its own folder and classify. */
+  /** Run @p prm into its own folder with @p run (given the parameters and
+   * the log, it returns the outcome: "converges, ..." or "recovers by
+   * cut-back (n), ..."), or "stops: <cause>" if it throws; log the outcome
+   * and whether the folder's CSV file ending in @p csv holds only finite
+   * numbers. */
+  template <typename Run>
+  void
+  run_case(const std::string &name,
+           const std::string &prm,
+           const std::string &csv,
+           const Run         &run)
+  {
+    const std::string  dir = "case-" + std::to_string(n_cases++);
+    std::ostringstream log;
+    std::string        outcome;
+    try
+      {
+        outcome = run(Scene::SceneParameters::from_string(
+                        prm + "subsection Output\n  set Directory = " + dir +
+                        "\n  set Write VTU = false\n"
+                        "  set Print timing = false\nend\n"),
+                      log);
+      }
+    catch (const std::exception &e)
+      {
+        outcome = "stops: " + cause(error_message(e));
+      }
+    deallog << name << ": " << outcome << "; "
+            << (csv == "-time.csv" ? "time history " : "statistics ")
+            << finite_csv(dir, csv) << std::endl;
+  }
+
+  std::string
+  classify(const unsigned int cutbacks)
+  {
+    return cutbacks > 0 ?
+             "recovers by cut-back (" + std::to_string(cutbacks) + "), " :
+             std::string("converges, ");
+  }
+
+  /** A static scene. */
   void
   static_case(const std::string &name, const std::string &prm)
   {
-    const std::string  dir = "case-" + std::to_string(n_cases++);
-    std::ostringstream log;
-    std::string        outcome;
-    try
-      {
-        StaticSimulation      sim(Scene::SceneParameters::from_string(
-                               prm +
-                               "subsection Output\n  set Directory = " + dir +
-                               "\n  set Write VTU = false\n"
-                                    "  set Print timing = false\nend\n"),
-                             log);
-        const SolveStatistics s = sim.run();
-        std::ostringstream    o;
-        if (s.cutbacks > 0)
-          o << "recovers by cut-back (" << s.cutbacks << "), " << s.increments
-            << " increments, " << s.newton_iterations << " Newton iterations";
-        else
-          o << "converges, " << s.increments << " increments, "
-            << s.newton_iterations << " Newton iterations";
-        outcome = o.str();
-      }
-    catch (const std::exception &e)
-      {
-        outcome = "stops: " + cause(error_message(e));
-      }
-    deallog << name << ": " << outcome << "; statistics "
-            << finite_csv(dir, "-statistics.csv") << std::endl;
+    run_case(name,
+             prm,
+             "-statistics.csv",
+             [](const Scene::SceneParameters &p, std::ostream &log) {
+               StaticSimulation      sim(p, log);
+               const SolveStatistics s = sim.run();
+               return classify(s.cutbacks) + std::to_string(s.increments) +
+                      " increments, " + std::to_string(s.newton_iterations) +
+                      " Newton iterations";
+             });
   }
 
-  /** A dynamic scene, likewise. */
+  /** A dynamic scene: steps, cut-backs and iterations from its summary. */
   void
   dynamic_case(const std::string &name, const std::string &prm)
   {
-    const std::string  dir = "case-" + std::to_string(n_cases++);
-    std::ostringstream log;
-    std::string        outcome;
-    try
-      {
-        DynamicSimulation sim(Scene::SceneParameters::from_string(
-                                prm +
-                                "subsection Output\n  set Directory = " + dir +
-                                "\n  set Write VTU = false\n"
-                                "  set Print timing = false\nend\n"),
-                              log);
-        sim.run();
-        std::smatch       m;
-        const std::string text = log.str();
-        std::regex_search(text,
-                          m,
-                          std::regex("in (\\d+) steps \\((\\d+) cut back\\), "
-                                     "(\\d+) Newton iterations"));
-        outcome = (m[2] != "0" ? "recovers by cut-back (" + m[2].str() + "), " :
-                                 std::string("converges, ")) +
-                  m[1].str() + " steps, " + m[3].str() + " Newton iterations";
-      }
-    catch (const std::exception &e)
-      {
-        outcome = "stops: " + cause(error_message(e));
-      }
-    deallog << name << ": " << outcome << "; time history "
-            << finite_csv(dir, "-time.csv") << std::endl;
+    run_case(name,
+             prm,
+             "-time.csv",
+             [](const Scene::SceneParameters &p, std::ostringstream &log) {
+               DynamicSimulation sim(p, log);
+               sim.run();
+               std::smatch       m;
+               const std::string text = log.str();
+               std::regex_search(text,
+                                 m,
+                                 std::regex(
+                                   "in (\\d+) steps \\((\\d+) cut "
+                                   "back\\), (\\d+) Newton iterations"));
+               return classify(std::stoi(m[2].str())) + m[1].str() +
+                      " steps, " + m[3].str() + " Newton iterations";
+             });
   }
 
   std::string

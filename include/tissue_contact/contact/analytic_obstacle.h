@@ -167,6 +167,17 @@ namespace TissueContact
       return W - area / (24. * eps_p) * (l2 + l1 * l1);
     }
 
+    /** The area of the planar polygon of the first @p n vertices of
+     * @p x (a fan from the first). */
+    inline double
+    polygon_area(const std::array<Point<3>, 4> &x, const unsigned int n)
+    {
+      double area = 0.;
+      for (unsigned int k = 1; k + 1 < n; ++k)
+        area += 0.5 * cross_product_3d(x[k] - x[0], x[k + 1] - x[0]).norm();
+      return area;
+    }
+
     /** The area of penetrating_part(): where the penalty of
      * obstacle_energy() acts. */
     inline double
@@ -175,11 +186,7 @@ namespace TissueContact
     {
       std::array<Point<3>, 4> x;
       std::array<double, 4>   d;
-      const unsigned int      n    = penetrating_part(obstacle, tri, x, d);
-      double                  area = 0.;
-      for (unsigned int k = 1; k + 1 < n; ++k)
-        area += 0.5 * cross_product_3d(x[k] - x[0], x[k + 1] - x[0]).norm();
-      return area;
+      return polygon_area(x, penetrating_part(obstacle, tri, x, d));
     }
 
   } // namespace Contact
