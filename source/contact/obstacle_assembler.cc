@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace TissueContact
 {
@@ -15,8 +14,28 @@ namespace TissueContact
       const std::vector<ObstacleContact> &obstacles)
       : surface(surface)
       , obstacles(obstacles)
-      , multipliers(obstacles.size(), std::vector<double>(surface.X.size(), 0.))
-    {}
+      , multipliers(obstacles.size() * surface.X.size(), 0.)
+      , pushed_vertices(obstacles.size())
+    {
+      for (unsigned int o = 0; o < obstacles.size(); ++o)
+        {
+          for (unsigned int t = 0; t < surface.n_triangles(); ++t)
+            if (pushes(this->obstacles[o], t))
+              for (const unsigned int v : surface.triangles[t])
+                pushed_vertices[o].push_back(v);
+          auto &p = pushed_vertices[o];
+          std::sort(p.begin(), p.end());
+          p.erase(std::unique(p.begin(), p.end()), p.end());
+        }
+    }
+
+
+    double
+    ObstacleAssembler::multiplier(const unsigned int o,
+                                  const unsigned int v) const
+    {
+      return multipliers[o * surface.X.size() + v];
+    }
 
 
     bool
@@ -24,7 +43,7 @@ namespace TissueContact
                                       const unsigned int t) const
     {
       for (const unsigned int v : surface.triangles[t])
-        if (multipliers[o][v] > 0.)
+        if (multiplier(o, v) > 0.)
           return true;
       return false;
     }
@@ -45,7 +64,7 @@ namespace TissueContact
         c.obstacle,
         tri,
         c.penalty,
-        {{multipliers[o][v[0]], multipliers[o][v[1]], multipliers[o][v[2]]}});
+        {{multiplier(o, v[0]), multiplier(o, v[1]), multiplier(o, v[2])}});
     }
 
 
@@ -60,7 +79,7 @@ namespace TissueContact
       std::array<double, 3> phi;
       for (unsigned int k = 0; k < 3; ++k)
         phi[k] = obstacles[o].obstacle.penetration(tri[k]) +
-                 multipliers[o][surface.triangles[t][k]] / obstacles[o].penalty;
+                 multiplier(o, surface.triangles[t][k]) / obstacles[o].penalty;
       std::array<Point<3>, 4> x;
       std::array<double, 4>   d;
       return polygon_area(x, non_negative_part(tri, phi, x, d));
@@ -211,41 +230,55 @@ namespace TissueContact
 
 
     double
+    ObstacleAssembler::uzawa_map(const Vector<double> &u,
+                                 std::vector<double>  &G) const
+    {
+      // G(lambda)_a = max(0, lambda_a + eps d_a) for each vertex an
+      // obstacle pushes; G - lambda moves lambda_a / eps by the
+      // constraint's violation there: the penetration where the vertex
+      // carries pressure, the gap where its multiplier still pushes
+      G                            = multipliers;
+      double             violation = 0.;
+      const unsigned int n_v       = surface.X.size();
+      for (unsigned int o = 0; o < obstacles.size(); ++o)
+        {
+          const double eps = obstacles[o].penalty;
+          for (const unsigned int v : pushed_vertices[o])
+            {
+              const double d =
+                obstacles[o].obstacle.penetration(surface.position(v, u));
+              const double lambda = multipliers[o * n_v + v];
+              G[o * n_v + v]      = std::max(0., lambda + eps * d);
+              violation =
+                std::max(violation, std::abs(G[o * n_v + v] - lambda) / eps);
+            }
+        }
+      return violation;
+    }
+
+
+    double
+    ObstacleAssembler::violation(const Vector<double> &u) const
+    {
+      std::vector<double> G;
+      return uzawa_map(u, G);
+    }
+
+
+    double
     ObstacleAssembler::update_multipliers(const Vector<double> &u,
                                           const double          tolerance,
                                           const bool            first)
     {
-      // the Uzawa map G(lambda)_a = max(0, lambda_a + eps d_a) for each
-      // vertex an obstacle pushes; f = G(lambda) - lambda moves lambda_a /
-      // eps by the constraint's violation there: the penetration where
-      // the vertex carries pressure, the gap where its multiplier still
-      // pushes
-      const std::vector<double> lambda    = multiplier_values();
-      std::vector<double>       G         = lambda;
-      double                    violation = 0.;
-      const unsigned int        n_v       = surface.X.size();
-      for (unsigned int o = 0; o < obstacles.size(); ++o)
-        {
-          const double eps = obstacles[o].penalty;
-          for (unsigned int t = 0; t < surface.n_triangles(); ++t)
-            if (pushes(obstacles[o], t))
-              for (const unsigned int v : surface.triangles[t])
-                {
-                  const double d =
-                    obstacles[o].obstacle.penetration(surface.position(v, u));
-                  double &g = G[o * n_v + v];
-                  g         = std::max(0., lambda[o * n_v + v] + eps * d);
-                  violation = std::max(violation,
-                                       std::abs(g - lambda[o * n_v + v]) / eps);
-                }
-        }
+      std::vector<double> G;
+      const double        violation = uzawa_map(u, G);
       if (first)
         history.clear();
       if (!(violation > tolerance))
         return violation;
       std::vector<double> f(G.size());
       for (unsigned int i = 0; i < f.size(); ++i)
-        f[i] = G[i] - lambda[i];
+        f[i] = G[i] - multipliers[i];
       // Anderson acceleration of the fixed-point iteration (memory
       // max_history): lambda_new = G_k - dG gamma, gamma minimizing
       // |f_k - dF gamma| over the differences of the last iterates; plain
@@ -288,31 +321,25 @@ namespace TissueContact
       history.push_front({G, f});
       if (history.size() > max_history)
         history.pop_back();
-      set_multiplier_values(next);
+      multipliers.swap(next);
       return violation;
     }
 
 
-    std::vector<double>
+    const std::vector<double> &
     ObstacleAssembler::multiplier_values() const
     {
-      std::vector<double> values;
-      for (const auto &m : multipliers)
-        values.insert(values.end(), m.begin(), m.end());
-      return values;
+      return multipliers;
     }
 
 
     void
     ObstacleAssembler::set_multiplier_values(const std::vector<double> &values)
     {
-      AssertThrow(values.size() == obstacles.size() * surface.X.size(),
+      AssertThrow(values.size() == multipliers.size(),
                   ExcMessage("the contact multipliers read do not fit the "
                              "obstacles and the mesh"));
-      for (unsigned int o = 0; o < obstacles.size(); ++o)
-        std::copy(values.begin() + o * surface.X.size(),
-                  values.begin() + (o + 1) * surface.X.size(),
-                  multipliers[o].begin());
+      multipliers = values;
     }
 
 

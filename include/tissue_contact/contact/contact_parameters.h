@@ -80,9 +80,10 @@ namespace TissueContact
       /** The augmented-Lagrangian (Uzawa) loop on the obstacles
        * (doc/theory/05-contact.md, sec. 6.1): after each converged load
        * increment the multipliers take the contact pressure and the
-       * increment is solved again, until no vertex penetrates an obstacle
-       * by more than penetration_tolerance or max_multiplier_updates
-       * updates are spent. */
+       * increment is solved again, until the contact is violated by no
+       * more than penetration_tolerance (no vertex penetrates by more, no
+       * multiplier pushes a vertex that lifted off by more) or
+       * max_multiplier_updates updates are spent. */
       bool         augmented_lagrangian   = false;
       double       penetration_tolerance  = 1e-6;
       unsigned int max_multiplier_updates = 20;

@@ -75,9 +75,13 @@ namespace TissueContact
       update_multipliers(const Vector<double> &u,
                          const double          tolerance,
                          const bool            first);
+      /** The constraint's violation at @p u that update_multipliers()
+       * would measure, without an update. */
+      double
+      violation(const Vector<double> &u) const;
       /** The multipliers of all obstacles, one after the other (vertex
        * order), to be saved and restored (a cut-back, a checkpoint). */
-      std::vector<double>
+      const std::vector<double> &
       multiplier_values() const;
       void
       set_multiplier_values(const std::vector<double> &values);
@@ -85,9 +89,19 @@ namespace TissueContact
     private:
       const ContactSurface        &surface;
       std::vector<ObstacleContact> obstacles;
-      /** Per obstacle, per vertex: the multiplier @f$\lambda_a@f$
-       * (pressure units), zero unless the augmented Lagrangian is on. */
-      std::vector<std::vector<double>> multipliers;
+      /** The multiplier @f$\lambda_a@f$ (pressure units) of every
+       * obstacle o and mesh vertex v at o * n_vertices + v, zero unless the
+       * augmented Lagrangian is on. */
+      std::vector<double> multipliers;
+      /** Per obstacle: the vertices of the triangles it pushes, each once. */
+      std::vector<std::vector<unsigned int>> pushed_vertices;
+      /** The multiplier of obstacle @p o at vertex @p v. */
+      double
+      multiplier(const unsigned int o, const unsigned int v) const;
+      /** G(lambda) of the Uzawa step at @p u into @p G; returns the
+       * violation max |G - lambda| / eps_p. */
+      double
+      uzawa_map(const Vector<double> &u, std::vector<double> &G) const;
       /** The last Uzawa iterates of this increment, newest first: G(lambda)
        * and G(lambda) - lambda (the Anderson acceleration's memory). */
       struct Iterate

@@ -174,17 +174,19 @@ namespace TissueContact
     near_null_space() const override;
     /** The augmented-Lagrangian update of the obstacles' multipliers
      * (ObstacleAssembler::update_multipliers(), Contact/Augmented
-     * Lagrangian): true if some vertex penetrated by more than the
-     * tolerance and @p k < Maximum multiplier updates. Records the
-     * increments that ended above the tolerance (multiplier_warnings()). */
+     * Lagrangian): true if the contact was violated by more than the
+     * Penetration tolerance and @p k < Maximum multiplier updates. Records
+     * the increments that ended above the tolerance
+     * (multiplier_warnings()). */
     bool
     update_multipliers(const Vector<double> &u, const unsigned int k) override;
     std::vector<double>
     multipliers() const override;
     void
     set_multipliers(const std::vector<double> &values) override;
-    /** Load steps whose penetration stayed above the augmented-Lagrangian
-     * tolerance after Maximum multiplier updates, with it. */
+    /** Load steps whose contact violation stayed above the
+     * augmented-Lagrangian tolerance after Maximum multiplier updates, with
+     * it. */
     const std::vector<std::string> &
     multiplier_warnings() const
     {
