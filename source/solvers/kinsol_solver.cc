@@ -124,10 +124,7 @@ namespace TissueContact
       kinsol.residual      = [&](const Vector<double> &x, Vector<double> &F) {
         Vector<double> y(x);
         if (problem.update_sparsity_pattern(y))
-          {
-            J.reinit(problem.sparsity_pattern());
-            linear.pattern_changed();
-          }
+          J.reinit(problem.sparsity_pattern());
         if (!problem.assemble(y, load_factor, F, nullptr))
           return 1; // an inverted element: recoverable, shorter step
         for (const auto &t : targets)
@@ -137,10 +134,7 @@ namespace TissueContact
       kinsol.setup_jacobian = [&](const Vector<double> &x,
                                   const Vector<double> &) {
         if (problem.update_sparsity_pattern(x) || J.empty() || J.m() != n)
-          {
-            J.reinit(problem.sparsity_pattern());
-            linear.pattern_changed();
-          }
+          J.reinit(problem.sparsity_pattern());
         Vector<double> R(n);
         if (!problem.assemble(x, load_factor, R, &J))
           return 1;

@@ -56,12 +56,14 @@ namespace TissueContact
       prm.add_parameter(
         "Reuse preconditioner",
         reuse_preconditioner,
-        "For Type = GMRES+AMG: keep the AMG hierarchy from one Newton "
-        "iteration to the next within a load increment or time step while "
-        "GMRES converges at most 1.5 times slower with it than when it was "
-        "built (false: a new hierarchy for every solve). Measured: with "
-        "Forcing term = Eisenstat-Walker 30 % less linear-solve time on the "
-        "knee-scale tube (prm/knee_tube.prm); with a fixed Relative "
+        "For Type = GMRES+AMG: keep the AMG hierarchy from one solve to "
+        "the next (across Newton iterations, increments, time steps and "
+        "new contact couplings) while GMRES converges at most 1.5 times "
+        "slower with it than when it was built (false: a new hierarchy for "
+        "every solve). Measured: with Forcing term = Eisenstat-Walker 30 % "
+        "less linear-solve time on the quick knee-scale tube, and 21 "
+        "hierarchies instead of 116 on the full one (prm/knee_tube.prm, "
+        "doc/theory/04-solver.md sec. 4.5.1); with a fixed Relative "
         "tolerance of 0.1, twice the Newton iterations on a clamped block "
         "(a reused hierarchy reaches 0.1 where a fresh one, nearly exact, "
         "went far below), hence off by default.",

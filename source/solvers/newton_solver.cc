@@ -162,11 +162,14 @@ namespace TissueContact
         return std::make_pair(std::sqrt(free), std::sqrt(reaction));
       };
 
-      const LinearSolver linear_solver(
-        parameters.linear_solver,
-        parameters.linear_solver.uses_near_null_space() ?
-          problem.near_null_space() :
-          std::vector<Vector<double>>());
+      // one linear solver (and so one AMG hierarchy while it stays good)
+      // for all increments of a run
+      if (!linear_solver)
+        linear_solver = std::make_unique<LinearSolver>(
+          parameters.linear_solver,
+          parameters.linear_solver.uses_near_null_space() ?
+            problem.near_null_space() :
+            std::vector<Vector<double>>());
       Vector<double> R(n), R_trial(n), du(n), rhs(n), u_trial(n);
       const double   f_ext   = problem.external_force_norm(load_factor);
       double         r_first = 0., r_previous = 0., eta_previous = 0.;
@@ -190,10 +193,7 @@ namespace TissueContact
           {
             const auto scope = time_section(timer, "assembly");
             if (problem.update_sparsity_pattern(u))
-              {
-                K.reinit(problem.sparsity_pattern());
-                linear_solver.pattern_changed();
-              }
+              K.reinit(problem.sparsity_pattern());
             valid = problem.assemble(u, load_factor, R, &K);
           }
           if (!valid)
@@ -266,8 +266,8 @@ namespace TissueContact
                 K.diag_element(g.first) = diagonal;
             MatrixTools::apply_boundary_values(gap, K, du, rhs, true);
             const double eta =
-              linear_solver.forcing(r, r_previous, eta_previous, tolerance);
-            info.linear_iterations = linear_solver.solve(K, du, rhs, eta);
+              linear_solver->forcing(r, r_previous, eta_previous, tolerance);
+            info.linear_iterations = linear_solver->solve(K, du, rhs, eta);
             r_previous             = r;
             eta_previous           = eta;
             // an indefinite tangent (the penalty energy of contact is not
@@ -298,7 +298,7 @@ namespace TissueContact
                         sigma = next;
                         du    = 0.;
                         info.linear_iterations +=
-                          linear_solver.solve(K, du, rhs, eta);
+                          linear_solver->solve(K, du, rhs, eta);
                         ++statistics.tangent_shifts;
                       }
                   }

@@ -73,20 +73,16 @@ namespace TissueContact
        * hierarchy of an earlier solve is kept while it converges no more
        * than 1.5 times slower (iterations per decade of residual) than it
        * did when it was built, and rebuilt at once if GMRES reaches its
-       * cap with it. */
+       * cap with it. The hierarchy keeps its own copy of the matrix it was
+       * built from, so it stays a valid preconditioner when @p K is a later
+       * tangent, also one with more contact couplings in its pattern: only
+       * the convergence rate decides when it is replaced. */
       unsigned int
       solve(const SparseMatrix<double> &K,
             Vector<double>             &x,
             const Vector<double>       &b,
             const double                relative_tolerance = -1.) const;
 
-      /** The matrix's sparsity pattern has changed: the next solve builds
-       * a new preconditioner. */
-      void
-      pattern_changed() const
-      {
-        amg.reset();
-      }
 
       /**
        * The relative tolerance of the linear solve of Newton iteration k

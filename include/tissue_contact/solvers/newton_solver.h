@@ -161,8 +161,9 @@ namespace TissueContact
       const Parameters parameters;
 
     private:
-      SparseMatrix<double> K;
-      Vector<double>       viscosity;
+      SparseMatrix<double>          K;
+      Vector<double>                viscosity;
+      std::unique_ptr<LinearSolver> linear_solver;
     };
   } // namespace Solvers
 } // namespace TissueContact
