@@ -1,6 +1,7 @@
 #include <tissue_contact/output/vtu_writer.h>
 
 #include <iomanip>
+#include <iostream>
 #include <map>
 #include <sstream>
 
@@ -120,12 +121,50 @@ namespace TissueContact
     }
 
 
+    VtuSeriesWriter::~VtuSeriesWriter()
+    {
+      try
+        {
+          finish();
+        }
+      catch (const std::exception &e)
+        {
+          std::cerr << "error: the last result files were not written: "
+                    << e.what() << std::endl;
+        }
+    }
+
+
+    void
+    VtuSeriesWriter::finish() const
+    {
+      if (pending.valid())
+        pending.get();
+    }
+
+
+    void
+    VtuSeriesWriter::then(
+      std::function<void(const Records &, const Records &)> task)
+    {
+      pending = std::async(std::launch::async,
+                           [this,
+                            previous = std::move(pending),
+                            task     = std::move(task)]() mutable {
+                             if (previous.valid())
+                               previous.get();
+                             task(records, surface_records);
+                           });
+    }
+
+
     std::string
     VtuSeriesWriter::write(const Elasticity::ElasticAssembler &assembler,
                            const Vector<double>               &u,
                            const double                        time,
                            const std::vector<VertexField>     &vertex_fields)
     {
+      finish();
       std::ostringstream number;
       number << std::setw(4) << std::setfill('0') << records.size();
 
@@ -170,51 +209,64 @@ namespace TissueContact
         return VtuField{
           name, 1, std::vector<double>(v.begin(), v.end()), unit, false};
       };
-      const std::vector<VtuField> cell_fields = {material_id,
-                                                 scalar("J", q.J, ""),
-                                                 stress,
-                                                 scalar("von_mises",
-                                                        q.von_mises,
-                                                        units("stress")),
-                                                 scalar("strain_energy_density",
-                                                        q.strain_energy_density,
-                                                        units("stress"))};
+      std::vector<VtuField> cell_fields = {material_id,
+                                           scalar("J", q.J, ""),
+                                           stress,
+                                           scalar("von_mises",
+                                                  q.von_mises,
+                                                  units("stress")),
+                                           scalar("strain_energy_density",
+                                                  q.strain_energy_density,
+                                                  units("stress"))};
 
-      const std::string name = base_name + "-" + number.str() + ".vtu";
-      write_vtu(directory + "/" + name,
-                volume,
-                point_fields,
-                cell_fields,
-                time,
-                options.double_precision);
-
+      const std::string     name = base_name + "-" + number.str() + ".vtu";
+      std::vector<VtuField> surface_fields;
       if (!surface_vertices.empty())
-        {
-          std::vector<VtuField> surface_fields;
-          for (const auto &f : point_fields)
-            {
-              VtuField s{f.name, f.n_components, {}, f.units, false};
-              for (const unsigned int v : surface_vertices)
-                for (unsigned int c = 0; c < f.n_components; ++c)
-                  s.values.push_back(f.values[f.n_components * v + c]);
-              surface_fields.push_back(s);
-            }
-          const std::string surface_name =
-            base_name + "-surface-" + number.str() + ".vtu";
-          write_vtu(directory + "/" + surface_name,
-                    surface,
-                    surface_fields,
-                    {VtuField{"body", 1, surface_body, "", true}},
+        for (const auto &f : point_fields)
+          {
+            VtuField s{f.name, f.n_components, {}, f.units, false};
+            for (const unsigned int v : surface_vertices)
+              for (unsigned int c = 0; c < f.n_components; ++c)
+                s.values.push_back(f.values[f.n_components * v + c]);
+            surface_fields.push_back(s);
+          }
+
+      // compressing and writing: the meshes are fixed after construction,
+      // the fields are moved into the task, the records are only touched
+      // by it until finish()
+      pending = std::async(
+        std::launch::async,
+        [this,
+         time,
+         name,
+         number         = number.str(),
+         point_fields   = std::move(point_fields),
+         cell_fields    = std::move(cell_fields),
+         surface_fields = std::move(surface_fields)]() {
+          write_vtu(directory + "/" + name,
+                    volume,
+                    point_fields,
+                    cell_fields,
                     time,
                     options.double_precision);
-          surface_records.emplace_back(time, surface_name);
-          write_pvd(directory + "/" + base_name + "-surface.pvd",
-                    surface_records);
-        }
-
-      // the series lists a state only once its files are complete
-      records.emplace_back(time, name);
-      write_pvd(pvd_file(), records);
+          if (!surface_vertices.empty())
+            {
+              const std::string surface_name =
+                base_name + "-surface-" + number + ".vtu";
+              write_vtu(directory + "/" + surface_name,
+                        surface,
+                        surface_fields,
+                        {VtuField{"body", 1, surface_body, "", true}},
+                        time,
+                        options.double_precision);
+              surface_records.emplace_back(time, surface_name);
+              write_pvd(directory + "/" + base_name + "-surface.pvd",
+                        surface_records);
+            }
+          // the series lists a state only once its files are complete
+          records.emplace_back(time, name);
+          write_pvd(pvd_file(), records);
+        });
       return directory + "/" + name;
     }
   } // namespace Output

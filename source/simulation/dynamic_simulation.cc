@@ -253,6 +253,7 @@ namespace TissueContact
             // complete
             check_interrupt();
           }
+        results.finish();
       }
     catch (const std::exception &e)
       {
@@ -323,6 +324,7 @@ namespace TissueContact
           ++outputs;
           check_interrupt();
         });
+        results.finish();
       }
     catch (const Interrupted &i)
       {

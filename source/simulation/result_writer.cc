@@ -146,20 +146,30 @@ namespace TissueContact
 
 
   void
-  ResultWriter::write_checkpoint(Checkpoint                     &c,
+  ResultWriter::write_checkpoint(Checkpoint                      c,
                                  const std::vector<std::string> &csv_files)
   {
     const auto &p = problem.get_scene().parameters;
     c.parameters  = p.effective_parameters;
-    if (vtu)
-      {
-        c.vtu_records     = vtu->written();
-        c.surface_records = vtu->surface_written();
-      }
     for (const std::string &file : csv_files)
       c.file_sizes[std::filesystem::path(file).filename().string()] =
         std::filesystem::file_size(file);
-    c.write(checkpoint_file(p.output.directory, p.output.base_name));
+    const std::string path =
+      checkpoint_file(p.output.directory, p.output.base_name);
+    if (!vtu)
+      {
+        c.write(path);
+        return;
+      }
+    // after the VTU files it lists, on their writing thread: a checkpoint
+    // never names a file that is not complete
+    vtu->then([c = std::move(c),
+               path](const Output::VtuSeriesWriter::Records &v,
+                     const Output::VtuSeriesWriter::Records &s) mutable {
+      c.vtu_records     = v;
+      c.surface_records = s;
+      c.write(path);
+    });
   }
 
 

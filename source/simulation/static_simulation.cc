@@ -193,6 +193,7 @@ namespace TissueContact
         statistics = solver.solve(nonlinear_problem, u, &timer);
         nonlinear_problem.set_timer(nullptr);
         nonlinear_problem.complete(u);
+        results.finish();
       }
     catch (const std::exception &e)
       {

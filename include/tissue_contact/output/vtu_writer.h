@@ -7,6 +7,8 @@
 #include <deal.II/lac/vector.h>
 
 #include <array>
+#include <functional>
+#include <future>
 #include <string>
 #include <utility>
 #include <vector>
@@ -66,8 +68,15 @@ namespace TissueContact
       set_surface(const std::vector<std::array<unsigned int, 3>> &triangles,
                   const std::vector<types::material_id>          &body);
 
+      /** Waits for the last state's files (finish()); an error in writing
+       * them is printed, not thrown. */
+      ~VtuSeriesWriter();
+
       /** Write the state @p u at load factor (or time) @p time; returns the
-       * volume file's name. */
+       * volume file's name. The fields are computed here; the files are
+       * compressed and written on a thread of their own while the caller
+       * goes on (the next call, written() and finish() wait for them), so
+       * a serial linear solve that follows runs beside the writing. */
       std::string
       write(const Elasticity::ElasticAssembler &assembler,
             const Vector<double>               &u,
@@ -78,16 +87,33 @@ namespace TissueContact
       std::string
       pvd_file() const;
 
-      /** The states written: (time, file name) of the volume and the
-       * surface files. */
+      /** Wait until the files of the last write() are complete; rethrows
+       * the error that stopped them. */
+      void
+      finish() const;
+
+      /** The series written so far: (time, file name) of each state. */
+      using Records = std::vector<std::pair<double, std::string>>;
+
+      /** Run @p task on the writing thread once the files of the last
+       * write() are complete, with the volume and surface records that
+       * list them (a checkpoint that refers to them; not run if they
+       * failed: finish() then rethrows that error). */
+      void
+      then(std::function<void(const Records &, const Records &)> task);
+
+      /** The states written (after finish()): (time, file name) of the
+       * volume and the surface files. */
       const std::vector<std::pair<double, std::string>> &
       written() const
       {
+        finish();
         return records;
       }
       const std::vector<std::pair<double, std::string>> &
       surface_written() const
       {
+        finish();
         return surface_records;
       }
 
@@ -98,6 +124,7 @@ namespace TissueContact
         const std::vector<std::pair<double, std::string>> &volume,
         const std::vector<std::pair<double, std::string>> &surface)
       {
+        finish();
         records         = volume;
         surface_records = surface;
       }
@@ -112,9 +139,13 @@ namespace TissueContact
       /** Each point's two mesh vertices (equal for a vertex point). */
       std::vector<std::array<unsigned int, 2>> point_vertices;
       /** The mesh vertex of each point of the surface mesh. */
-      std::vector<unsigned int>                   surface_vertices;
-      std::vector<double>                         surface_body;
+      std::vector<unsigned int> surface_vertices;
+      std::vector<double>       surface_body;
+      /** Appended by the writing thread once a state's files are complete,
+       * read after finish(). */
       std::vector<std::pair<double, std::string>> records, surface_records;
+      /** The writing of the last state's files. */
+      mutable std::future<void> pending;
 
       std::string
       units(const std::string &quantity) const;

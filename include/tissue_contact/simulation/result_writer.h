@@ -46,6 +46,15 @@ namespace TissueContact
            const bool                                         write_vtu,
            const std::vector<std::pair<std::string, double>> &extra = {});
 
+    /** Wait until the VTU files of the last record() are written (they
+     * are written beside the run); throws if they could not be. */
+    void
+    finish() const
+    {
+      if (vtu)
+        vtu->finish();
+    }
+
     /** Whether step number @p step (counted from 1) is due for VTU output
      * by Output/Every n steps (the last step is always written by the
      * caller). */
@@ -70,9 +79,11 @@ namespace TissueContact
 
     /** Complete @p c with the output's state (the series written, the CSV
      * files' sizes: @p csv_files, each flushed) and the run's parameters,
-     * and write it to <base>-checkpoint.bin. */
+     * and write it to <base>-checkpoint.bin: at once without VTU output,
+     * else on the VTU writing thread once the files of the last record()
+     * are complete (finish() waits for it too). */
     void
-    write_checkpoint(Checkpoint &c, const std::vector<std::string> &csv_files);
+    write_checkpoint(Checkpoint c, const std::vector<std::string> &csv_files);
 
   private:
     const Problem                           &problem;
