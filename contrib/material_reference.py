@@ -10,6 +10,7 @@ self-consistency. Prints C++ initializers that the test embeds:
 Psi, P (row by row), |A| (Frobenius) and G : A : H for two fixed tensors.
 
     python3 contrib/material_reference.py     # needs sympy (Debian: python3-sympy)
+    python3 contrib/material_reference.py --uncoupled   # only sec. 3.7's forms
 """
 import sympy as sp
 
@@ -56,6 +57,31 @@ def fiber(alpha, beta, f):
     return alpha * (sp.exp(beta * (l2 - 1)) - 1) - alpha * beta * (l2 - 1)
 
 
+# the uncoupled forms (doc/theory/03-materials.md sec. 3.7): Psi_bar of the
+# invariants of F_bar = J^(-1/3) F with J = det F, plus
+# U = kappa/4 (J^2 - 1 - 2 ln J); no chain rule (M9)-(M10) here
+J = Fs.det()
+I1_bar = I1 * J**sp.Rational(-2, 3)
+I2_bar = I2 * J**sp.Rational(-4, 3)
+
+
+def volumetric(kappa):
+    return kappa / 4 * (J**2 - 1 - 2 * sp.log(J))
+
+
+def uncoupled_neo_hooke(mu, kappa):
+    return mu / 2 * (I1_bar - 3) + volumetric(kappa)
+
+
+def uncoupled_mooney_rivlin(C1, C2, kappa):
+    return C1 * (I1_bar - 3) + C2 * (I2_bar - 3) + volumetric(kappa)
+
+
+def uncoupled_veronda(alpha, beta, kappa):
+    return (alpha * (sp.exp(beta * (I1_bar - 3)) - 1)
+            - alpha * beta / 2 * (I2_bar - 3) + volumetric(kappa))
+
+
 Z = sp.Integer  # exact constants: no binary floating point before evaluation
 models = [
     ("neo-Hookean(3, 5)", neo_hooke(Z(3), Z(5))),
@@ -65,7 +91,15 @@ models = [
     ("linear(3, 5)", linear(Z(3), Z(5))),
     ("Mooney-Rivlin(5, 1, 50) + fiber(2, 3, e_x)",
      mooney_rivlin(Z(5), Z(1), Z(50)) + fiber(Z(2), Z(3), [1, 0, 0])),
+    ("uncoupled neo-Hookean(3, 50)", uncoupled_neo_hooke(Z(3), Z(50))),
+    ("uncoupled Mooney-Rivlin(5, 1, 60)",
+     uncoupled_mooney_rivlin(Z(5), Z(1), Z(60))),
+    ("uncoupled Veronda(7, 8, 500)", uncoupled_veronda(Z(7), Z(8), Z(500))),
 ]
+import sys
+only_uncoupled = sys.argv[1:] == ["--uncoupled"]
+if only_uncoupled:
+    models = [m for m in models if m[0].startswith("uncoupled")]
 
 subs = dict(zip(Fs, F_value))
 for name, psi in models:
@@ -82,6 +116,8 @@ for name, psi in models:
     print("  {%s, {%s}, %s, %s}," % (fmt(psi_v), ", ".join(fmt(p) for p in P_v),
                                       fmt(norm_A), fmt(GAH)))
 
+if only_uncoupled:
+    sys.exit(0)
 
 # Corotated(3, 5) (doc/theory/03-materials.md sec. 3.6): Psi = mu |U - I|^2
 # + lam/2 (tr U - 3)^2 with U = sqrt(C) has no closed form in F that sympy

@@ -5,6 +5,7 @@
 #include <tissue_contact/materials/mooney_rivlin.h>
 #include <tissue_contact/materials/neo_hookean.h>
 #include <tissue_contact/materials/saint_venant_kirchhoff.h>
+#include <tissue_contact/materials/uncoupled_material.h>
 #include <tissue_contact/materials/veronda.h>
 
 #include <deal.II/base/function_parser.h>
@@ -67,6 +68,23 @@ namespace TissueContact
                         "Veronda beta (dimensionless), the exponential "
                         "stiffening rate.",
                         Patterns::Double());
+      prm.add_parameter(
+        "Formulation",
+        formulation,
+        "For neo-Hookean, Mooney-Rivlin and Veronda: coupled (the forms "
+        "above, the volume term in a or Lambda) or uncoupled (their energy "
+        "in the isochoric invariants of J^(-1/3) F plus kappa/4 (J^2 - 1 - "
+        "2 ln J), so that the shear parameters and the Bulk modulus kappa "
+        "are set apart; doc/theory/03-materials.md sec. 3.7). Lambda and a "
+        "are then unused.",
+        Patterns::Selection("coupled|uncoupled"));
+      prm.add_parameter("Bulk modulus",
+                        bulk_modulus,
+                        "For Formulation = uncoupled: the small-strain bulk "
+                        "modulus kappa (stress units, > 0); Poisson's ratio "
+                        "is (3 kappa - 2 mu) / (2 (3 kappa + mu)), 0.4999 at "
+                        "kappa = 5000 mu.",
+                        Patterns::Double());
       prm.enter_subsection("Fiber");
       prm.add_parameter("Enabled",
                         fiber,
@@ -96,6 +114,12 @@ namespace TissueContact
     std::unique_ptr<Material>
     create_material(const MaterialParameters &b)
     {
+      const bool uncoupled = b.formulation == "uncoupled";
+      AssertThrow(!uncoupled || b.model == "neo-Hookean" ||
+                    b.model == "Mooney-Rivlin" || b.model == "Veronda",
+                  ExcMessage("Formulation = uncoupled exists for neo-Hookean, "
+                             "Mooney-Rivlin and Veronda, not for the model '" +
+                             b.model + "'"));
       if (b.model == "rigid")
         return nullptr;
       // magnitudes that overflow the energy (exp(beta (I1 - 3)), squares
@@ -110,6 +134,7 @@ namespace TissueContact
              {"a", b.a},
              {"Alpha", b.alpha},
              {"Beta", b.beta},
+             {"Bulk modulus", b.bulk_modulus},
              {"Fiber/Alpha", b.fiber_alpha},
              {"Fiber/Beta", b.fiber_beta}})
         AssertThrow(std::isfinite(value) &&
@@ -128,7 +153,15 @@ namespace TissueContact
           return std::make_unique<LinearElastic>(b.mu, b.lambda);
         }
       std::unique_ptr<HyperelasticMaterial> ground;
-      if (b.model == "neo-Hookean")
+      if (uncoupled && b.model == "neo-Hookean")
+        ground = std::make_unique<UncoupledNeoHookean>(b.mu, b.bulk_modulus);
+      else if (uncoupled && b.model == "Mooney-Rivlin")
+        ground =
+          std::make_unique<UncoupledMooneyRivlin>(b.C1, b.C2, b.bulk_modulus);
+      else if (uncoupled && b.model == "Veronda")
+        ground =
+          std::make_unique<UncoupledVeronda>(b.alpha, b.beta, b.bulk_modulus);
+      else if (b.model == "neo-Hookean")
         ground = std::make_unique<NeoHookean>(b.mu, b.lambda);
       else if (b.model == "Mooney-Rivlin")
         ground = std::make_unique<MooneyRivlin>(b.C1, b.C2, b.a);

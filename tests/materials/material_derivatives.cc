@@ -8,7 +8,9 @@
 // symbolic derivation of the energies of doc/theory/03-materials.md
 // (contrib/material_reference.py, differentiating Psi(F) directly; the
 // corotated model's in 60-digit arithmetic). Corotated elasticity against
-// linear elasticity at small strain and under a 90 degree rotation.
+// linear elasticity at small strain and under a 90 degree rotation. The
+// uncoupled forms: a pure dilatation gives the pressure U'(J) whatever the
+// shear parameters, an isochoric deformation a traceless Cauchy stress.
 
 #include "../tests.h"
 
@@ -18,6 +20,7 @@
 #include <tissue_contact/materials/mooney_rivlin.h>
 #include <tissue_contact/materials/neo_hookean.h>
 #include <tissue_contact/materials/saint_venant_kirchhoff.h>
+#include <tissue_contact/materials/uncoupled_material.h>
 #include <tissue_contact/materials/veronda.h>
 
 #include <deal.II/base/function_parser.h>
@@ -303,6 +306,49 @@ namespace
     report("dissertation (D 3.85)", dissertation);
     report("corrected (implemented)", ours);
   }
+
+  /** The uncoupled forms separate volume and shape (doc/theory/03-materials.md
+   * sec. 3.7): under F = s I the Cauchy stress is the pressure U'(J) I with
+   * U'(J) = kappa/2 (J - 1/J), the same for every isochoric energy; under a
+   * deformation with det F = 1 it is traceless. */
+  void
+  uncoupled_split()
+  {
+    deallog << "--- uncoupled forms: volume and shape apart" << std::endl;
+    const double       kappa = 40.;
+    const Tensor<2, 3> I     = unit_symmetric_tensor<3>();
+    Tensor<2, 3>       shear = I; // det = 1
+    shear[0][1]              = 0.4;
+    shear[2][0]              = -0.3;
+    const Tensor<2, 3> stretch =
+      Tensor<2, 3>({{1.3, 0., 0.}, {0., 1. / 1.3, 0.}, {0., 0., 1.}});
+    const UncoupledNeoHookean   nh(3., kappa);
+    const UncoupledMooneyRivlin mr(5., 1., kappa);
+    const UncoupledVeronda      ve(7., 8., kappa);
+    for (const Material *m :
+         std::initializer_list<const Material *>{&nh, &mr, &ve})
+      {
+        double err_p = 0., err_tr = 0.;
+        for (const double s : {0.8, 0.95, 1.1})
+          {
+            const Tensor<2, 3> F = s * I;
+            const double       J = s * s * s;
+            const Tensor<2, 3> sigma =
+              m->first_piola_kirchhoff(F, X0) * transpose(F) / J;
+            const double p = 0.5 * kappa * (J - 1. / J);
+            err_p = std::max(err_p, (sigma - p * I).norm() / std::abs(p));
+          }
+        for (const Tensor<2, 3> &F : {shear, stretch, shear * stretch})
+          {
+            const Tensor<2, 3> sigma =
+              m->first_piola_kirchhoff(F, X0) * transpose(F);
+            err_tr = std::max(err_tr, std::abs(trace(sigma)) / sigma.norm());
+          }
+        deallog << m->name() << ": F = s I, |sigma - U'(J) I| / |U'(J)| "
+                << error_bound(err_p) << "; det F = 1, |tr sigma| / |sigma| "
+                << error_bound(err_tr) << std::endl;
+      }
+  }
 } // namespace
 
 int
@@ -324,6 +370,10 @@ main()
   check(LinearElastic(3., 5.), 3., 5.);
   check(Corotated(3., 5.), 3., 5.);
   corotated_against_linear(3., 5.);
+  check(UncoupledNeoHookean(3., 50.), 3., 50. - 2.);
+  check(UncoupledMooneyRivlin(5., 1., 60.), 12., 60. - 8.);
+  check(UncoupledVeronda(7., 8., 500.), 56., 500. - 112. / 3.);
+  uncoupled_split();
   check(FiberReinforcement(
           std::make_unique<MooneyRivlin>(5., 1., 50.), 2., 3., fiber_x),
         12.,
@@ -375,6 +425,8 @@ main()
   expect_error([] { MooneyRivlin(1., 0., -10.); });
   expect_error([] { Veronda(7., -8., 100.); });
   expect_error([] { LinearElastic(1., -5.); });
+  expect_error([] { UncoupledMooneyRivlin(5., 1., -1.); });
+  expect_error([] { UncoupledVeronda(7., 8., 0.); });
 
   // against the independent symbolic evaluation
   deallog << "--- against contrib/material_reference.py at F_ref" << std::endl;
@@ -469,7 +521,45 @@ main()
       0.66054696290618009,
       0.58591237044449407},
      24.941569367548293,
-     52.011194148183598},
+     52.011194148183598}, // uncoupled neo-Hookean(3, 50)
+    {0.32425937120783566,
+     {0.34675242204413448,
+      0.8225895971113758,
+      -0.65405261440937112,
+      0.83942716933232975,
+      -0.91707125078826812,
+      0.80395269766869826,
+      -0.73931639399101035,
+      0.77754474162047582,
+      0.048192829402095821},
+     165.61155194431879,
+     61.35642534686523},
+    // uncoupled Mooney-Rivlin(5, 1, 60)
+    {1.3346922741744542,
+     {1.2401691979749039,
+      3.4771579074341683,
+      -2.6711121286987858,
+      3.5744079239787498,
+      -3.9720924156492754,
+      3.4664647596209086,
+      -3.0361805757378497,
+      3.3680212689857809,
+      0.091210267815012597},
+     213.75936601189909,
+     205.75115927722953},
+    // uncoupled Veronda(7, 8, 500)
+    {25.346557365822786,
+     {58.474337902569161,
+      153.42589471696138,
+      -125.33996633243254,
+      157.73519370893564,
+      -182.21156806836584,
+      148.60372275627213,
+      -141.1217765481081,
+      144.0925499210997,
+      -0.65630598693419007},
+     7710.9055805311937,
+     31335.113109138383},
   };
   const std::unique_ptr<Material> models[] = {
     std::make_unique<NeoHookean>(3., 5.),
@@ -479,7 +569,10 @@ main()
     std::make_unique<LinearElastic>(3., 5.),
     std::make_unique<FiberReinforcement>(
       std::make_unique<MooneyRivlin>(5., 1., 50.), 2., 3., fiber_x),
-    std::make_unique<Corotated>(3., 5.)};
-  for (unsigned int m = 0; m < 7; ++m)
+    std::make_unique<Corotated>(3., 5.),
+    std::make_unique<UncoupledNeoHookean>(3., 50.),
+    std::make_unique<UncoupledMooneyRivlin>(5., 1., 60.),
+    std::make_unique<UncoupledVeronda>(7., 8., 500.)};
+  for (unsigned int m = 0; m < 10; ++m)
     compare_with_reference(*models[m], references[m]);
 }

@@ -145,6 +145,13 @@ main(int argc, char **argv)
   run("Mooney-Rivlin without energy barrier",
       "subsection Bodies\n subsection Body 0\n  set Model = Mooney-Rivlin\n"
       "  set C1 = 1\n  set C2 = 1\n  set a = -2.5\n end\nend\n");
+  run("uncoupled form of a model that has none",
+      "subsection Bodies\n subsection Body 0\n"
+      "  set Model = Saint Venant-Kirchhoff\n  set Formulation = uncoupled\n"
+      " end\nend\n");
+  run("uncoupled Mooney-Rivlin without bulk modulus",
+      "subsection Bodies\n subsection Body 0\n  set Model = Mooney-Rivlin\n"
+      "  set Formulation = uncoupled\n  set Bulk modulus = 0\n end\nend\n");
   run("unknown entry", "subsection Newton\n set Maximum iteration = 3\nend\n");
   run("malformed value",
       "subsection Discretization\n set Polynomial degree = three\nend\n");

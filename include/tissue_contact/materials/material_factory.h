@@ -25,7 +25,9 @@ namespace TissueContact
       double      mu = 1., lambda = 1.;
       double      C1 = 1., C2 = 0., a = 1.;
       double      alpha = 1., beta = 1.;
-      bool        fiber       = false;
+      std::string formulation  = "coupled";
+      double      bulk_modulus = 1000.;
+      bool        fiber        = false;
       double      fiber_alpha = 0., fiber_beta = 1.;
       std::string fiber_direction = "1; 0; 0";
 
