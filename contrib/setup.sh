@@ -11,7 +11,7 @@ root_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${BUILD_DIR:-"$root_dir/build"}
 jobs=${JOBS:-$(nproc)}
 
-packages=(libdeal.ii-dev zlib1g-dev gmsh numdiff gnuplot-nox cmake g++ make)
+packages=(libdeal.ii-dev zlib1g-dev gmsh numdiff gnuplot-nox python3 cmake g++ make)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -14,9 +14,16 @@ script removes before it runs the program:
       set Combine   = product          # or zip (the lists side by side)
       set Quantity  = strain_energy    # a column of <base>-statistics.csv, last row
       set Reference = finest           # the last case's quantity, a number,
-                                       # or none (no error column)
+                                       # or none (no error column); "finest
+                                       # per ENTRY": the last case with the
+                                       # same value of that swept entry
       set Plot      = unknowns, error, loglog; wall_time, error, loglog
                                        # x, y, lin or loglog; one figure each
+      set Curves    = Discretization/Polynomial degree
+                                       # one curve per value (per combination
+                                       # of values) of these swept entries;
+                                       # default: the first swept entry
+      set Key       = bottom left      # gnuplot's key position (top right)
     end
 
 Each case runs `tissue-contact case.prm` in its own folder under
@@ -25,7 +32,7 @@ linear iterations (from the run summary), peak memory of the process (its
 maximum resident set, from wait4), the quantity and its relative error against
 the reference. Written: study-output/NAME/NAME.csv, and with gnuplot
 NAME.png (NAME-2.png, ...) beside it, one curve per value of the first
-swept entry. Nothing here
+swept entry (or of the Curves entries). Nothing here
 is a test; the studies and their figures are described in doc/users/choosing.md.
 """
 import csv
@@ -175,15 +182,34 @@ def main():
               + f": {wall:.2f} s, {row['quantity']}"
               + (f" FAILED: {row['failure']}" if status else ""), flush=True)
 
+    def swept(name):
+        """The swept entry named by its path or by its last part."""
+        for path, _ in entries:
+            if name in (path, path.split("&")[0].strip().split("/")[-1]):
+                return path
+        sys.exit(f"study: '{name}' is no swept entry")
+
     reference = study.get("Reference", "finest")
-    ref = (rows[-1]["quantity"] if reference == "finest" else
-           None if reference == "none" else float(reference))
+    group = None
+    m = re.match(r"finest per (.+)$", reference)
+    if m:
+        group = swept(m.group(1).strip())
     for row in rows:
+        if reference == "none":
+            ref_row, ref = None, None
+        elif reference == "finest" or group:
+            ref_row = [r for r in rows
+                       if group is None or r[group] == row[group]][-1]
+            ref = ref_row["quantity"]
+        else:
+            ref_row, ref = None, float(reference)
         q = row["quantity"]
         row["error"] = (abs(q - ref) / abs(ref)
                         if q is not None and ref not in (None, 0.0) else None)
-        if reference == "finest" and row is rows[-1]:
+        if row is ref_row:
             row["error"] = None  # the reference itself
+    ref = rows[-1]["quantity"] if reference.startswith("finest") else (
+        None if reference == "none" else float(reference))
     table = os.path.join(root, name + ".csv")
     columns = list(cases[0].keys()) + [
         "unknowns", "increments", "cutbacks", "newton", "linear", "wall_time",
@@ -196,7 +222,9 @@ def main():
           f"{reference} = {ref})")
 
     if "Plot" in study and shutil.which("gnuplot"):
-        first = entries[0][0]
+        by = [swept(c.strip()) for c in study.get(
+            "Curves", entries[0][0]).split(",")]
+        curves = list(dict.fromkeys(tuple(row[b] for b in by) for row in rows))
 
         def column(name):
             """A column by its name, or a swept entry by its last part."""
@@ -212,10 +240,13 @@ def main():
             x, y = column(x), column(y)
             stem = os.path.join(root, name + ("" if k == 0 else f"-{k + 1}"))
             with open(stem + ".dat", "w") as f:
-                for value in entries[0][1]:
-                    f.write(f'"{first.split("/")[-1]} = {value}"\n')
+                for values in curves:
+                    f.write('"' + ", ".join(
+                        f'{b.split("&")[0].strip().split("/")[-1]} = {v}'
+                        for b, v in zip(by, values)) + '"\n')
                     for row in rows:
-                        if row[first] == value and row.get(x) is not None \
+                        if tuple(row[b] for b in by) == values \
+                                and row.get(x) is not None \
                                 and row.get(y) is not None:
                             f.write(f"{row[x]} {row[y]}\n")
                     f.write("\n\n")
@@ -223,14 +254,15 @@ def main():
                       f"set output '{stem}.png'\n"
                       f"set xlabel '{x.split('&')[0].strip()}'\n"
                       f"set ylabel '{y}'\n"
-                      f"set key top right\nset grid\n"
+                      f"set key {study.get('Key', 'top right')}\n"
+                      f"set grid\n"
                       + ("set logscale xy\n" if scale and scale[0] == "loglog"
                          else "")
                       + f"set title '{name}: {y} of {study['Quantity']}'\n"
                       + "plot " + ", ".join(
                           f"'{stem}.dat' index {i} using 1:2 with linespoints "
                           f"title columnheader(1)"
-                          for i in range(len(entries[0][1]))) + "\n")
+                          for i in range(len(curves))) + "\n")
             subprocess.run(["gnuplot"], input=script, text=True, check=True)
             print(f"figure: {stem}.png")
     return 0
