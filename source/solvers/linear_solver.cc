@@ -131,6 +131,10 @@ namespace TissueContact
                             const double                relative_tolerance,
                             bool                       &converged) const
     {
+      // a hierarchy of a matrix of another size (another problem) is no
+      // preconditioner of this one
+      if (amg && amg_matrix.m() != K.m())
+        amg.reset();
       const bool fresh = !amg;
       if (fresh)
         {
