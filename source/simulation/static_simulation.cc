@@ -132,9 +132,11 @@ namespace TissueContact
       if (p.output.print_timing)
         {
           std::ostringstream line;
-          line << std::fixed << std::setprecision(1)
-               << "  converged at load factor " << lambda << " after "
-               << total.wall_time() << " s";
+          // the load factor to the precision of the smallest increments
+          line << std::fixed << std::setprecision(5)
+               << "  converged at load factor " << lambda
+               << std::setprecision(1) << " after " << total.wall_time()
+               << " s";
           if (!last)
             line << "; about "
                  << total.wall_time() * (1. - lambda) / (lambda - lambda_start)
