@@ -56,9 +56,15 @@ namespace TissueContact
       out << "  body '" << b.name << "' (material id " << int(b.id)
           << "): " << b.material.model << (b.material.fiber ? " + fibers" : "")
           << "\n";
-    const auto &linear = p.solver.linear_solver;
+    const auto linear =
+      p.solver.linear_solver.resolved(nonlinear_problem.n_dofs());
     out << "  linear solver: " << linear.type
         << (linear.type == "direct" ? " (" + linear.direct_solver + ")" : "")
+        << (p.solver.linear_solver.type == "automatic" ?
+              ", chosen by Type = automatic (" +
+                std::string(linear.type == "direct" ? "below " : "at least ") +
+                std::to_string(linear.automatic_limit) + " unknowns)" :
+              std::string())
         << "\n";
     if (linear.type == "direct" && nonlinear_problem.n_dofs() > 20000)
       out << "  warning: a direct solver at " << nonlinear_problem.n_dofs()

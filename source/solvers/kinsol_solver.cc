@@ -114,8 +114,9 @@ namespace TissueContact
       SUNDIALS::KINSOL<Vector<double>> kinsol(data);
 
       SparseMatrix<double> J;
-      const LinearSolver   linear(linear_solver,
-                                linear_solver.uses_near_null_space() ?
+      const auto           resolved = linear_solver.resolved(n);
+      const LinearSolver   linear(resolved,
+                                resolved.uses_near_null_space() ?
                                     problem.near_null_space() :
                                     std::vector<Vector<double>>());
       std::string          failure;

@@ -22,10 +22,14 @@ namespace TissueContact
       prm.add_parameter(
         "Type",
         type,
-        "Linear solver of each Newton step: GMRES+Jacobi (inexact GMRES "
-        "with diagonal preconditioning, dissertation 4.7.3), direct (sparse "
-        "LU, UMFPACK) or GMRES+AMG (Trilinos ML algebraic multigrid).",
-        Patterns::Selection("GMRES+Jacobi|direct|GMRES+AMG"));
+        "Linear solver of each Newton step: automatic (direct below 10 000 "
+        "unknowns, GMRES+AMG from there: the crossover measured in "
+        "doc/users/choosing.md lies between 7 000 and 16 000 unknowns), "
+        "GMRES+Jacobi (inexact GMRES with diagonal preconditioning, "
+        "dissertation 4.7.3), direct (sparse LU, UMFPACK or MUMPS) or "
+        "GMRES+AMG (Trilinos ML algebraic multigrid; the entries below set "
+        "its tolerance and hierarchy, also when automatic chooses it).",
+        Patterns::Selection("automatic|GMRES+Jacobi|direct|GMRES+AMG"));
       prm.add_parameter(
         "Direct solver",
         direct_solver,
@@ -98,9 +102,11 @@ namespace TissueContact
                           near_null_space[k].end());
       AssertThrow(parameters.type == "GMRES+Jacobi" ||
                     parameters.type == "direct" ||
-                    parameters.type == "GMRES+AMG",
+                    parameters.type == "GMRES+AMG" ||
+                    parameters.type == "automatic",
                   ExcMessage("Linear solver: unknown Type '" + parameters.type +
-                             "'; use GMRES+Jacobi, direct or GMRES+AMG"));
+                             "'; use automatic, GMRES+Jacobi, direct or "
+                             "GMRES+AMG"));
     }
 
 
@@ -211,8 +217,10 @@ namespace TissueContact
                                   parameters.relative_tolerance :
                                   relative_tolerance;
       unsigned int iterations = 1;
-      x                       = 0.;
-      if (parameters.type == "direct" && parameters.direct_solver == "MUMPS")
+      // Type = automatic: chosen by the size of this matrix
+      const std::string type = parameters.resolved(K.m()).type;
+      x                      = 0.;
+      if (type == "direct" && parameters.direct_solver == "MUMPS")
         {
           TrilinosWrappers::SparseMatrix A;
           A.reinit(K);
@@ -235,13 +243,13 @@ namespace TissueContact
                 "GMRES+AMG");
             }
         }
-      else if (parameters.type == "direct")
+      else if (type == "direct")
         {
           SparseDirectUMFPACK lu;
           lu.initialize(K);
           lu.vmult(x, b);
         }
-      else if (parameters.type == "GMRES+AMG")
+      else if (type == "GMRES+AMG")
         {
           bool converged;
           iterations = solve_amg(K, x, b, tolerance, converged);
@@ -267,7 +275,7 @@ namespace TissueContact
           iterations = control.last_step();
         }
       AssertThrow(std::isfinite(x.l2_norm()),
-                  ExcMessage("the linear solver (" + parameters.type +
+                  ExcMessage("the linear solver (" + type +
                              ") produced a non-finite Newton update; the "
                              "tangent matrix is singular or ill-conditioned"));
       return iterations;

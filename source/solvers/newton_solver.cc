@@ -165,11 +165,14 @@ namespace TissueContact
       // one linear solver (and so one AMG hierarchy while it stays good)
       // for all increments of a run
       if (!linear_solver)
-        linear_solver = std::make_unique<LinearSolver>(
-          parameters.linear_solver,
-          parameters.linear_solver.uses_near_null_space() ?
-            problem.near_null_space() :
-            std::vector<Vector<double>>());
+        {
+          const auto linear = parameters.linear_solver.resolved(n);
+          linear_solver =
+            std::make_unique<LinearSolver>(linear,
+                                           linear.uses_near_null_space() ?
+                                             problem.near_null_space() :
+                                             std::vector<Vector<double>>());
+        }
       Vector<double> R(n), R_trial(n), du(n), rhs(n), u_trial(n);
       const double   f_ext   = problem.external_force_norm(load_factor);
       double         r_first = 0., r_previous = 0., eta_previous = 0.;

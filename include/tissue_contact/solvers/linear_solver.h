@@ -37,7 +37,9 @@ namespace TissueContact
       /** Entries of the prm subsection "Linear solver". */
       struct Parameters
       {
-        std::string  type               = "direct";
+        /** "automatic" (resolved(): direct below automatic_limit unknowns,
+         * GMRES+AMG from there), "direct", "GMRES+AMG" or "GMRES+Jacobi". */
+        std::string  type               = "automatic";
         std::string  direct_solver      = "UMFPACK";
         double       relative_tolerance = 0.1;
         unsigned int max_iterations     = 1000;
@@ -46,6 +48,24 @@ namespace TissueContact
         std::string forcing_term = "fixed";
         /** Keep the AMG hierarchy from one solve to the next. */
         bool reuse_preconditioner = false;
+
+        /** Type = automatic chooses the direct solver below this many
+         * unknowns and GMRES+AMG from it on: the crossover measured on a
+         * P1 cantilever without contact lies between 7 000 and 16 000
+         * unknowns (doc/users/choosing.md), and contact couplings make
+         * the factorization dearer still. */
+        static constexpr types::global_dof_index automatic_limit = 10000;
+
+        /** These parameters with Type = automatic replaced by the solver
+         * it chooses for @p n_dofs unknowns (the others unchanged). */
+        Parameters
+        resolved(const types::global_dof_index n_dofs) const
+        {
+          Parameters p = *this;
+          if (p.type == "automatic")
+            p.type = n_dofs < automatic_limit ? "direct" : "GMRES+AMG";
+          return p;
+        }
 
         /** Whether the solver uses a near-null space (GMRES+AMG): the
          * others need none, so none is computed for them. */
@@ -60,7 +80,10 @@ namespace TissueContact
         declare_parameters(ParameterHandler &prm);
       };
 
-      /** @p near_null_space: the vectors AMG's coarse spaces must
+      /** With Type = automatic the solver is chosen by the size of each
+       * matrix solved (callers that pass a near-null space resolve it
+       * first, Parameters::resolved(), to know whether AMG needs one);
+       * @p near_null_space: the vectors AMG's coarse spaces must
        * represent (NonlinearProblem::near_null_space(); empty: one
        * constant vector). */
       LinearSolver(const Parameters                  &parameters,
