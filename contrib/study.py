@@ -208,8 +208,6 @@ def main():
                         if q is not None and ref not in (None, 0.0) else None)
         if row is ref_row:
             row["error"] = None  # the reference itself
-    ref = rows[-1]["quantity"] if reference.startswith("finest") else (
-        None if reference == "none" else float(reference))
     table = os.path.join(root, name + ".csv")
     columns = list(cases[0].keys()) + [
         "unknowns", "increments", "cutbacks", "newton", "linear", "wall_time",
@@ -219,7 +217,9 @@ def main():
         writer.writeheader()
         writer.writerows(rows)
     print(f"table: {table} (quantity: {study['Quantity']}, reference: "
-          f"{reference} = {ref})")
+          f"{reference}"
+          + (f" = {rows[-1]['quantity']}" if reference == "finest" else "")
+          + ")")
 
     if "Plot" in study and shutil.which("gnuplot"):
         by = [swept(c.strip()) for c in study.get(

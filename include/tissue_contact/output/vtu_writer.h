@@ -75,7 +75,7 @@ namespace TissueContact
       /** Write the state @p u at load factor (or time) @p time; returns the
        * volume file's name. The fields are computed here; the files are
        * compressed and written on a thread of their own while the caller
-       * goes on (the next call, written() and finish() wait for them), so
+       * goes on (the next call and finish() wait for them), so
        * a serial linear solve that follows runs beside the writing. */
       std::string
       write(const Elasticity::ElasticAssembler &assembler,
@@ -102,27 +102,10 @@ namespace TissueContact
       void
       then(std::function<void(const Records &, const Records &)> task);
 
-      /** The states written (after finish()): (time, file name) of the
-       * volume and the surface files. */
-      const std::vector<std::pair<double, std::string>> &
-      written() const
-      {
-        finish();
-        return records;
-      }
-      const std::vector<std::pair<double, std::string>> &
-      surface_written() const
-      {
-        finish();
-        return surface_records;
-      }
-
       /** Continue a series of which @p volume and @p surface were written
        * (a restarted run): the next state gets the next number. */
       void
-      continue_series(
-        const std::vector<std::pair<double, std::string>> &volume,
-        const std::vector<std::pair<double, std::string>> &surface)
+      continue_series(const Records &volume, const Records &surface)
       {
         finish();
         records         = volume;
@@ -141,9 +124,9 @@ namespace TissueContact
       /** The mesh vertex of each point of the surface mesh. */
       std::vector<unsigned int> surface_vertices;
       std::vector<double>       surface_body;
-      /** Appended by the writing thread once a state's files are complete,
-       * read after finish(). */
-      std::vector<std::pair<double, std::string>> records, surface_records;
+      /** Appended by the writing thread once a state's files are complete;
+       * read there too (then()), or after finish(). */
+      Records records, surface_records;
       /** The writing of the last state's files. */
       mutable std::future<void> pending;
 
