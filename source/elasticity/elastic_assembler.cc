@@ -2,6 +2,7 @@
 
 #include <deal.II/base/parallel.h>
 #include <deal.II/base/work_stream.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 
@@ -37,6 +38,35 @@ namespace TissueContact
       // Voigt index pairs: 11 22 33 23 13 12
       constexpr unsigned int voigt[6][2] =
         {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+
+      /**
+       * Add the element terms of a vertex pressure (N3), (N5) of
+       * doc/theory/08-nodal-pressure.md: @f$S_p = \bar p J C^{-1}@f$ and,
+       * when @p CC is not null, @f$\mathbb{C}_p = \bar p J (C^{-1}\otimes
+       * C^{-1} - 2 C^{-1}\odot C^{-1})@f$.
+       */
+      void
+      add_vertex_pressure(const Tensor<2, 3>    &F,
+                          const double           p,
+                          SymmetricTensor<2, 3> &S,
+                          SymmetricTensor<4, 3> *CC)
+      {
+        const SymmetricTensor<2, 3> Ci = invert(symmetrize(transpose(F) * F));
+        const double                pJ = p * determinant(F);
+        S += pJ * Ci;
+        if (CC == nullptr)
+          return;
+        // each of the 36 stored entries once
+        for (unsigned int a = 0; a < 6; ++a)
+          for (unsigned int b = 0; b < 6; ++b)
+            {
+              const unsigned int I = voigt[a][0], J = voigt[a][1];
+              const unsigned int K = voigt[b][0], L = voigt[b][1];
+              (*CC)[I][J][K][L] +=
+                pJ * (Ci[I][J] * Ci[K][L] - Ci[I][K] * Ci[J][L] -
+                      Ci[I][L] * Ci[J][K]);
+            }
+      }
 
     } // namespace
 
@@ -83,6 +113,8 @@ namespace TissueContact
                                      update_values | update_JxW_values);
       std::vector<types::global_dof_index> dofs(n_local);
       Vector<double>                       local(n_local);
+      std::vector<NodalPressure::Element>  nodal_elements;
+      nodal_element.assign(n_cells, -1);
       for (const auto &cell : disc.dof_handler.active_cell_iterators())
         {
           const unsigned int c = cell->active_cell_index();
@@ -120,6 +152,30 @@ namespace TissueContact
                 grad_N[(c * n_q + q) * n_nodes + local_node[k]] =
                   fe_values.shape_grad(k, q);
 
+          if (b->material != nullptr && b->nodal_bulk_modulus > 0.)
+            {
+              AssertThrow(disc.degree == 1 && n_q == 1 && n_nodes == 4,
+                          ExcMessage(
+                            "Volumetric term = nodal average (material id " +
+                            std::to_string(cell->material_id()) +
+                            ") integrates the volume term at the vertices of "
+                            "linear tetrahedra: it needs Discretization/"
+                            "Polynomial degree = 1 (P2 locks much less; use "
+                            "Volumetric term = pointwise with it)"));
+              AssertThrow(cell_hyperelastic[c] != nullptr, ExcInternalError());
+              NodalPressure::Element e;
+              e.body  = cell->material_id();
+              e.V0    = fe_values.JxW(0);
+              e.kappa = b->nodal_bulk_modulus;
+              for (unsigned int k = 0; k < n_local; ++k)
+                e.dofs[local_node[k] * 3 + local_component[k]] = dofs[k];
+              for (unsigned int a = 0; a < 4; ++a)
+                e.vertices[a] = cell->vertex_index(a);
+              nodal_element[c] = nodal_elements.size();
+              nodal_cells.push_back(c);
+              nodal_elements.push_back(e);
+            }
+
           if (!b->loaded)
             continue;
           local = 0.;
@@ -144,6 +200,46 @@ namespace TissueContact
               }
           f_ext.add(dofs, local);
         }
+
+      if (!nodal_elements.empty())
+        {
+          nodal = std::make_unique<NodalPressure>(std::move(nodal_elements));
+          DynamicSparsityPattern dsp(disc.n_dofs());
+          DoFTools::make_sparsity_pattern(disc.dof_handler, dsp);
+          nodal->add_couplings(dsp);
+          widened_pattern.copy_from(dsp);
+        }
+    }
+
+
+    NodalPressure::State
+    ElasticAssembler::nodal_state(const Vector<double> &u, bool &valid) const
+    {
+      std::vector<double> J(nodal_cells.size());
+      for (unsigned int k = 0; k < nodal_cells.size(); ++k)
+        {
+          J[k] = determinant(deformation_gradient(nodal_cells[k], 0, u));
+          if (!(J[k] > 0.))
+            {
+              valid = false;
+              return {};
+            }
+        }
+      return nodal->state(J);
+    }
+
+
+    std::vector<double>
+    ElasticAssembler::vertex_pressure(const Vector<double> &u) const
+    {
+      const unsigned int n_vertices =
+        disc.dof_handler.get_triangulation().n_vertices();
+      if (!nodal)
+        return {};
+      bool       valid = true;
+      const auto state = nodal_state(u, valid);
+      return valid ? nodal->vertex_pressure(state, n_vertices) :
+                     std::vector<double>(n_vertices, 0.);
     }
 
 
@@ -181,6 +277,19 @@ namespace TissueContact
       if (K != nullptr)
         *K = 0.;
       bool valid = true;
+
+      // the vertex pressures first: every element of such a body needs
+      // the mean of its four (N3)
+      NodalPressure::State                     vertex_state;
+      std::vector<std::array<Tensor<1, 3>, 4>> dv; // dv_e/dx_b per element
+      if (nodal)
+        {
+          vertex_state = nodal_state(u, valid);
+          if (!valid)
+            return false;
+          if (K != nullptr)
+            dv.resize(nodal->n_elements());
+        }
 
       // local index of (node a, component i)
       std::vector<unsigned int> local_index(n_nodes * 3);
@@ -226,6 +335,23 @@ namespace TissueContact
                                   X,
                                   S,
                                   K != nullptr ? &CC : nullptr);
+                  const int k = nodal ? nodal_element[c] : -1;
+                  if (k >= 0)
+                    {
+                      add_vertex_pressure(F,
+                                          nodal->element_pressure(vertex_state,
+                                                                  k),
+                                          S,
+                                          K != nullptr ? &CC : nullptr);
+                      if (K != nullptr)
+                        {
+                          // dv_e/dx_b = V0_e cof(F) grad N_b   (N2)
+                          const Tensor<2, 3> cof =
+                            determinant(F) * transpose(invert(F));
+                          for (unsigned int a = 0; a < 4; ++a)
+                            dv[k][a] = w * (cof * g[a]);
+                        }
+                    }
                   m.P = F * static_cast<Tensor<2, 3>>(S);
                 }
               else if (K == nullptr)
@@ -355,6 +481,8 @@ namespace TissueContact
                       CopyData(),
                       2 * MultithreadInfo::n_threads(),
                       64);
+      if (valid && K != nullptr && nodal)
+        nodal->add_tangent(vertex_state, dv, *K);
       if (valid)
         R.add(-load_factor, f_ext);
       return valid;
@@ -403,6 +531,14 @@ namespace TissueContact
                              const double          load_factor) const
     {
       double W = 0.;
+      if (nodal)
+        {
+          bool       valid = true;
+          const auto state = nodal_state(u, valid);
+          if (!valid)
+            return std::numeric_limits<double>::infinity();
+          W += nodal->energy(state);
+        }
       for (const unsigned int c : deformable_cells)
         for (unsigned int q = 0; q < n_q; ++q)
           {
@@ -456,6 +592,11 @@ namespace TissueContact
       for (auto &v : out.cauchy_stress)
         v.reinit(n_cells);
 
+      bool                 vertex_valid = true;
+      NodalPressure::State vertex_state;
+      if (nodal)
+        vertex_state = nodal_state(u, vertex_valid);
+
       for (unsigned int c = 0; c < n_cells; ++c)
         {
           double       volume = 0., J = 0., psi = 0.;
@@ -474,6 +615,14 @@ namespace TissueContact
                   sigma += cell_material[c]->first_piola_kirchhoff(F, X) *
                            transpose(F) * (w / Jq);
                 }
+            }
+          if (nodal && nodal_element[c] >= 0 && vertex_valid)
+            {
+              // the vertex term's share (doc/theory/08, sec. 8.4)
+              const unsigned int k = nodal_element[c];
+              psi += nodal->element_energy_density(vertex_state, k) * volume;
+              sigma += nodal->element_pressure(vertex_state, k) * volume *
+                       Tensor<2, 3>(unit_symmetric_tensor<3>());
             }
           out.J[c]                     = J / volume;
           out.strain_energy_density[c] = psi / volume;

@@ -85,6 +85,19 @@ namespace TissueContact
                         "is (3 kappa - 2 mu) / (2 (3 kappa + mu)), 0.4999 at "
                         "kappa = 5000 mu.",
                         Patterns::Double());
+      prm.add_parameter(
+        "Volumetric term",
+        volumetric_term,
+        "For Formulation = uncoupled: where the volume term U(J) is "
+        "integrated. pointwise: at the quadrature points, the "
+        "displacement-only element, which locks on P1 meshes as Poisson's "
+        "ratio approaches 1/2 (stiff by tens of percent at 0.49); nodal "
+        "average: at the vertices, with the volume ratio of each vertex's "
+        "share of its elements (Bonet and Burton's average nodal pressure "
+        "tetrahedron, a mixed u-p formulation whose pressure is eliminated "
+        "vertex by vertex; doc/theory/08-nodal-pressure.md), which does "
+        "not lock. P1 only; it widens the tangent's sparsity pattern.",
+        Patterns::Selection("pointwise|nodal average"));
       prm.enter_subsection("Fiber");
       prm.add_parameter("Enabled",
                         fiber,
@@ -120,8 +133,16 @@ namespace TissueContact
                   ExcMessage("Formulation = uncoupled exists for neo-Hookean, "
                              "Mooney-Rivlin and Veronda, not for the model '" +
                              b.model + "'"));
+      AssertThrow(!b.nodal_volume() || uncoupled,
+                  ExcMessage("Volumetric term = nodal average needs "
+                             "Formulation = uncoupled (it integrates the "
+                             "volume term U(J) of the uncoupled forms at the "
+                             "vertices); the model '" +
+                             b.model +
+                             "' is in Formulation = " + b.formulation));
       if (b.model == "rigid")
         return nullptr;
+      const bool pointwise = !b.nodal_volume();
       // magnitudes that overflow the energy (exp(beta (I1 - 3)), squares
       // of moduli) are refused by name, not met later as an inverted
       // element or a failed line search
@@ -154,13 +175,19 @@ namespace TissueContact
         }
       std::unique_ptr<HyperelasticMaterial> ground;
       if (uncoupled && b.model == "neo-Hookean")
-        ground = std::make_unique<UncoupledNeoHookean>(b.mu, b.bulk_modulus);
+        ground = std::make_unique<UncoupledNeoHookean>(b.mu,
+                                                       b.bulk_modulus,
+                                                       pointwise);
       else if (uncoupled && b.model == "Mooney-Rivlin")
-        ground =
-          std::make_unique<UncoupledMooneyRivlin>(b.C1, b.C2, b.bulk_modulus);
+        ground = std::make_unique<UncoupledMooneyRivlin>(b.C1,
+                                                         b.C2,
+                                                         b.bulk_modulus,
+                                                         pointwise);
       else if (uncoupled && b.model == "Veronda")
-        ground =
-          std::make_unique<UncoupledVeronda>(b.alpha, b.beta, b.bulk_modulus);
+        ground = std::make_unique<UncoupledVeronda>(b.alpha,
+                                                    b.beta,
+                                                    b.bulk_modulus,
+                                                    pointwise);
       else if (b.model == "neo-Hookean")
         ground = std::make_unique<NeoHookean>(b.mu, b.lambda);
       else if (b.model == "Mooney-Rivlin")

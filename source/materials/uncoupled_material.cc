@@ -9,8 +9,31 @@ namespace TissueContact
 {
   namespace Materials
   {
-    UncoupledMaterial::UncoupledMaterial(const double kappa)
+    double
+    VolumetricEnergy::U(const double J) const
+    {
+      return 0.25 * kappa * (J * J - 1. - 2. * std::log(J));
+    }
+
+
+    double
+    VolumetricEnergy::dU(const double J) const
+    {
+      return 0.5 * kappa * (J - 1. / J);
+    }
+
+
+    double
+    VolumetricEnergy::ddU(const double J) const
+    {
+      return 0.5 * kappa * (1. + 1. / (J * J));
+    }
+
+
+    UncoupledMaterial::UncoupledMaterial(const double kappa,
+                                         const bool   pointwise_volume)
       : kappa(kappa)
+      , pointwise_volume(pointwise_volume)
     {}
 
 
@@ -29,9 +52,10 @@ namespace TissueContact
     double
     UncoupledMaterial::psi(const Invariants &I) const
     {
-      const double p = 1. / std::cbrt(I.I3), J = std::sqrt(I.I3);
+      const double p = 1. / std::cbrt(I.I3);
       return psi_isochoric(p * I.I1, p * p * I.I2) +
-             0.25 * kappa * (I.I3 - 1. - 2. * std::log(J));
+             (pointwise_volume ? VolumetricEnergy{kappa}.U(std::sqrt(I.I3)) :
+                                 0.);
     }
 
 
@@ -44,17 +68,18 @@ namespace TissueContact
       const IsochoricDerivatives B = psi_isochoric_derivatives(I1_bar, I2_bar);
 
       // derivatives with respect to I3
-      const double d3_I1_bar  = -I.I1 * p / (3. * I.I3);
-      const double d3_I2_bar  = -2. * I.I2 * q / (3. * I.I3);
-      const double d33_I1_bar = 4. * I.I1 * p / (9. * I.I3 * I.I3);
-      const double d33_I2_bar = 10. * I.I2 * q / (9. * I.I3 * I.I3);
-      const double d3_p       = -p / (3. * I.I3);
-      const double d3_q       = -2. * q / (3. * I.I3);
-      const double d3_J       = 0.5 / J;
-      const double d33_J      = -0.25 / (J * I.I3);
-      const double dU         = 0.5 * kappa * (J - 1. / J);
-      const double ddU        = 0.5 * kappa * (1. + 1. / (J * J));
-      const double d3_bar[2]  = {d3_I1_bar, d3_I2_bar};
+      const double           d3_I1_bar  = -I.I1 * p / (3. * I.I3);
+      const double           d3_I2_bar  = -2. * I.I2 * q / (3. * I.I3);
+      const double           d33_I1_bar = 4. * I.I1 * p / (9. * I.I3 * I.I3);
+      const double           d33_I2_bar = 10. * I.I2 * q / (9. * I.I3 * I.I3);
+      const double           d3_p       = -p / (3. * I.I3);
+      const double           d3_q       = -2. * q / (3. * I.I3);
+      const double           d3_J       = 0.5 / J;
+      const double           d33_J      = -0.25 / (J * I.I3);
+      const VolumetricEnergy volume{pointwise_volume ? kappa : 0.};
+      const double           dU        = volume.dU(J);
+      const double           ddU       = volume.ddU(J);
+      const double           d3_bar[2] = {d3_I1_bar, d3_I2_bar};
 
       InvariantDerivatives D;
       D.d[0] = p * B.d[0];
@@ -79,8 +104,9 @@ namespace TissueContact
 
 
     UncoupledNeoHookean::UncoupledNeoHookean(const double mu,
-                                             const double kappa)
-      : UncoupledMaterial(kappa)
+                                             const double kappa,
+                                             const bool   pointwise_volume)
+      : UncoupledMaterial(kappa, pointwise_volume)
       , mu(mu)
     {
       check_parameters();
@@ -106,8 +132,9 @@ namespace TissueContact
 
     UncoupledMooneyRivlin::UncoupledMooneyRivlin(const double C1,
                                                  const double C2,
-                                                 const double kappa)
-      : UncoupledMaterial(kappa)
+                                                 const double kappa,
+                                                 const bool   pointwise_volume)
+      : UncoupledMaterial(kappa, pointwise_volume)
       , C1(C1)
       , C2(C2)
     {
@@ -136,8 +163,9 @@ namespace TissueContact
 
     UncoupledVeronda::UncoupledVeronda(const double alpha,
                                        const double beta,
-                                       const double kappa)
-      : UncoupledMaterial(kappa)
+                                       const double kappa,
+                                       const bool   pointwise_volume)
+      : UncoupledMaterial(kappa, pointwise_volume)
       , alpha(alpha)
       , beta(beta)
     {

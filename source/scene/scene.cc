@@ -428,10 +428,14 @@ namespace TissueContact
     {
       std::map<types::material_id, Elasticity::BodyData> data;
       for (unsigned int i = 0; i < parameters.bodies.size(); ++i)
-        data[parameters.bodies[i].id] = {
-          materials[i].get(),
-          parameters.bodies[i].density,
-          !parameters.bodies[i].prescribed_rigid()};
+        {
+          const auto &b = parameters.bodies[i];
+          data[b.id]    = {materials[i].get(),
+                           b.density,
+                           !b.prescribed_rigid(),
+                        b.material.nodal_volume() ? b.material.bulk_modulus :
+                                                       0.};
+        }
       return data;
     }
 

@@ -137,7 +137,7 @@ namespace TissueContact
     const bool body_contact =
       contact && !scene.parameters.contact.pairs.empty();
     if (!body_contact && !rigid)
-      sparsity.copy_from(disc.sparsity_pattern);
+      sparsity.copy_from(assembler.sparsity_pattern());
     else
       {
         // the finite element pattern copied row by row from the one the
@@ -145,7 +145,7 @@ namespace TissueContact
         // again from the cells: the knee-scale tube rebuilds its pattern
         // 40 times as the skin's crease closes)
         DynamicSparsityPattern               dsp(disc.n_dofs());
-        const SparsityPattern               &fe = disc.sparsity_pattern;
+        const SparsityPattern               &fe = assembler.sparsity_pattern();
         std::vector<types::global_dof_index> columns;
         for (types::global_dof_index row = 0; row < fe.n_rows(); ++row)
           {

@@ -210,6 +210,13 @@ namespace TissueContact
     if (write_vtu && vtu)
       {
         std::vector<Output::VertexField> fields;
+        const Vector<double>             u_fe = problem.displacement(u);
+        // the vertex pressures of bodies with Volumetric term = nodal
+        // average (doc/theory/08-nodal-pressure.md)
+        std::vector<double> p =
+          problem.elastic_assembler().vertex_pressure(u_fe);
+        if (!p.empty())
+          fields.push_back({"hydrostatic_stress", 1, std::move(p), "stress"});
         if (const auto *depth = problem.depth_field())
           fields.push_back({"material_depth", 1, *depth, "length"});
         if (problem.contact_assembler())
@@ -224,10 +231,7 @@ namespace TissueContact
             fields.push_back({"contact_pressure", 1, c.pressure, "stress"});
             fields.push_back({"penetration", 1, c.penetration, "length"});
           }
-        vtu->write(problem.elastic_assembler(),
-                   problem.displacement(u),
-                   time,
-                   fields);
+        vtu->write(problem.elastic_assembler(), u_fe, time, fields);
       }
     return results;
   }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <tissue_contact/base/discretization.h>
+#include <tissue_contact/elasticity/nodal_pressure.h>
 #include <tissue_contact/materials/hyperelastic_material.h>
 #include <tissue_contact/materials/material.h>
 
@@ -10,6 +11,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 
 namespace TissueContact
 {
@@ -28,6 +30,10 @@ namespace TissueContact
        * deformable and free rigid bodies, false for a body whose motion is
        * prescribed (its loads would only enter the reactions). */
       bool loaded = true;
+      /** The bulk modulus @f$\kappa@f$ of a body whose volume term is
+       * integrated at the vertices (doc/theory/08-nodal-pressure.md; its
+       * material then evaluates the isochoric energy alone), 0 otherwise. */
+      double nodal_bulk_modulus = 0.;
     };
 
     /** Dead external loads at load factor 1: body force per unit mass and
@@ -59,7 +65,11 @@ namespace TissueContact
      * @f$\Pi(u,\lambda) = \int\Psi(F)\,dV - \lambda f^{\rm ext}\cdot u@f$,
      * whose gradient the residual is. Assembly runs on all cores with
      * WorkStream. Vectors and matrices are assembled without constraints;
-     * the solver imposes prescribed values.
+     * the solver imposes prescribed values. Bodies with
+     * BodyData::nodal_bulk_modulus > 0 have their volume term at the
+     * vertices (NodalPressure, doc/theory/08-nodal-pressure.md): the
+     * elements get the mean vertex pressure, the tangent the vertex
+     * stiffness, whose couplings sparsity_pattern() contains.
      */
     class ElasticAssembler
     {
@@ -93,6 +103,23 @@ namespace TissueContact
        */
       void
       use_matrix_pattern(const SparsityPattern &pattern);
+
+      /**
+       * The sparsity pattern of the tangent this assembler writes: the
+       * discretization's, widened by the vertex-stiffness couplings where a
+       * body's volume term is at the vertices.
+       */
+      const SparsityPattern &
+      sparsity_pattern() const
+      {
+        return nodal ? widened_pattern : disc.sparsity_pattern;
+      }
+
+      /** The vertex pressure @f$p_a@f$ of bodies whose volume term is at
+       * the vertices, per mesh vertex (0 elsewhere); empty if there are
+       * none. */
+      std::vector<double>
+      vertex_pressure(const Vector<double> &u) const;
 
       /** @f$\Pi(u,\lambda)@f$, or +infinity if an element is inverted. */
       double
@@ -153,6 +180,17 @@ namespace TissueContact
       std::vector<unsigned int> positions;
       const SparsityPattern    *positions_pattern = nullptr;
       std::size_t               positions_entries = 0;
+
+      // the volume term at the vertices: null if no body has it
+      std::unique_ptr<NodalPressure> nodal;
+      std::vector<int>               nodal_element; // [cell]: index or -1
+      std::vector<unsigned int>      nodal_cells;   // [index]: cell
+      SparsityPattern                widened_pattern;
+
+      /** The vertex state at @p u; false in @p valid if an element of
+       * such a body is inverted. */
+      NodalPressure::State
+      nodal_state(const Vector<double> &u, bool &valid) const;
 
       /** @f$F = I + \sum_k u_k\, e_{c_k}\otimes\nabla N_{a_k}@f$ at
        * quadrature point @p q of cell @p c. */

@@ -25,9 +25,10 @@ namespace TissueContact
       double      mu = 1., lambda = 1.;
       double      C1 = 1., C2 = 0., a = 1.;
       double      alpha = 1., beta = 1.;
-      std::string formulation  = "coupled";
-      double      bulk_modulus = 1000.;
-      bool        fiber        = false;
+      std::string formulation     = "coupled";
+      double      bulk_modulus    = 1000.;
+      std::string volumetric_term = "pointwise";
+      bool        fiber           = false;
       double      fiber_alpha = 0., fiber_beta = 1.;
       std::string fiber_direction = "1; 0; 0";
 
@@ -35,6 +36,15 @@ namespace TissueContact
        * subsection "Fiber") to this object. */
       void
       declare_parameters(ParameterHandler &prm);
+
+      /** Whether the volume term is integrated at the vertices
+       * (Volumetric term = nodal average,
+       * doc/theory/08-nodal-pressure.md). */
+      bool
+      nodal_volume() const
+      {
+        return volumetric_term == "nodal average";
+      }
     };
 
     /**

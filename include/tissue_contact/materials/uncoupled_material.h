@@ -17,6 +17,27 @@ namespace TissueContact
     };
 
     /**
+     * The volumetric energy of the uncoupled forms,
+     * @f$U(J) = \frac\kappa4(J^2 - 1 - 2\ln J)@f$, and its derivatives
+     * (doc/theory/03-materials.md, (M8)).
+     */
+    struct VolumetricEnergy
+    {
+      double kappa = 0.;
+
+      double
+      U(const double J) const;
+      /** @f$U'(J) = \frac\kappa2(J - J^{-1})@f$, the hydrostatic Cauchy
+       * stress. */
+      double
+      dU(const double J) const;
+      /** @f$U''(J) = \frac\kappa2(1 + J^{-2})@f$. */
+      double
+      ddU(const double J) const;
+    };
+
+
+    /**
      * An isotropic material in uncoupled form (doc/theory/03-materials.md,
      * sec. 3.7, (M8)): @f$\Psi = \bar\Psi(\bar I_1, \bar I_2) + U(J)@f$
      * with @f$\bar I_1 = I_3^{-1/3}I_1@f$, @f$\bar I_2 = I_3^{-2/3}I_2@f$
@@ -26,12 +47,17 @@ namespace TissueContact
      * IsotropicMaterial computes the stress and the tangent. Small-strain
      * equivalents: the model's @f$\mu@f$ and @f$\lambda = \kappa -
      * \frac23\mu@f$.
+     *
+     * With @p pointwise_volume false the material evaluates
+     * @f$\bar\Psi@f$ alone: its volumetric term is integrated at the
+     * vertices by Elasticity::NodalPressure (doc/theory/08-nodal-pressure.md).
+     * Its small-strain equivalents still include @f$\kappa@f$, the body's.
      */
     class UncoupledMaterial : public IsotropicMaterial
     {
     public:
       /** Throws unless the bulk modulus @p kappa is positive. */
-      explicit UncoupledMaterial(const double kappa);
+      UncoupledMaterial(const double kappa, const bool pointwise_volume);
 
       /** @f$\bar\Psi@f$. */
       virtual double
@@ -62,6 +88,8 @@ namespace TissueContact
       check_parameters() const;
 
       const double kappa;
+      /** Whether @f$U(J)@f$ is part of the energy evaluated here. */
+      const bool pointwise_volume;
     };
 
 
@@ -69,7 +97,9 @@ namespace TissueContact
     class UncoupledNeoHookean : public UncoupledMaterial
     {
     public:
-      UncoupledNeoHookean(const double mu, const double kappa);
+      UncoupledNeoHookean(const double mu,
+                          const double kappa,
+                          const bool   pointwise_volume = true);
       std::string
       name() const override
       {
@@ -98,7 +128,8 @@ namespace TissueContact
     public:
       UncoupledMooneyRivlin(const double C1,
                             const double C2,
-                            const double kappa);
+                            const double kappa,
+                            const bool   pointwise_volume = true);
       std::string
       name() const override
       {
@@ -128,7 +159,8 @@ namespace TissueContact
       /** Throws unless @f$\alpha > 0@f$ and @f$\beta > 0@f$. */
       UncoupledVeronda(const double alpha,
                        const double beta,
-                       const double kappa);
+                       const double kappa,
+                       const bool   pointwise_volume = true);
       std::string
       name() const override
       {
