@@ -12,6 +12,11 @@ script removes before it runs the program:
       set Sweep     = Discretization/Polynomial degree = 1 | 2; \\
                       Mesh/Box subdivisions = 8, 2, 2 | 16, 4, 4
       set Combine   = product          # or zip (the lists side by side)
+      set Skip      = Discretization/Polynomial degree = 2 & \\
+                      Bodies/Body 0/Volumetric term = nodal average
+                                       # cases not to run: each item (items
+                                       # separated by ";") skips the cases
+                                       # with all of its "entry = value"
       set Quantity  = strain_energy    # a column of <base>-statistics.csv, last row
       set Reference = finest           # the last case's quantity, a number,
                                        # or none (no error column); "finest
@@ -83,7 +88,19 @@ def sweep_cases(study):
         combos = list(zip(*lists))
     else:
         combos = list(itertools.product(*lists))
-    return entries, [dict(zip([p for p, _ in entries], c)) for c in combos]
+    cases = [dict(zip([p for p, _ in entries], c)) for c in combos]
+    skips = []
+    for item in filter(None, (i.strip() for i in study.get("Skip", "").split(";"))):
+        conditions = {}
+        for condition in item.split("&"):
+            path, value = condition.split("=", 1)
+            conditions[path.strip()] = value.strip()
+        skips.append(conditions)
+    return entries, [
+        case
+        for case in cases
+        if not any(all(case.get(p) == v for p, v in skip.items()) for skip in skips)
+    ]
 
 
 def with_entries(scene, case, folder):
