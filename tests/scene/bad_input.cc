@@ -152,6 +152,13 @@ main(int argc, char **argv)
   run("uncoupled Mooney-Rivlin without bulk modulus",
       "subsection Bodies\n subsection Body 0\n  set Model = Mooney-Rivlin\n"
       "  set Formulation = uncoupled\n  set Bulk modulus = 0\n end\nend\n");
+  run("volume term at the vertices of a coupled form",
+      "subsection Bodies\n subsection Body 0\n"
+      "  set Volumetric term = nodal average\n end\nend\n");
+  run("volume term at the vertices of P2 elements",
+      "subsection Discretization\n set Polynomial degree = 2\nend\n"
+      "subsection Bodies\n subsection Body 0\n  set Formulation = uncoupled\n"
+      "  set Volumetric term = nodal average\n end\nend\n");
   run("unknown entry", "subsection Newton\n set Maximum iteration = 3\nend\n");
   run("malformed value",
       "subsection Discretization\n set Polynomial degree = three\nend\n");
