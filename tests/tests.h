@@ -8,6 +8,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/tensor.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -136,6 +137,70 @@ namespace TissueContactTests
     std::ostringstream out;
     out << std::fixed << std::setprecision(digits) << m << " 10^" << e;
     return out.str();
+  }
+
+  /**
+   * Finite-difference checks of an assembler at the displacement @p u and
+   * load factor @p lambda (central differences of step @p h): the relative
+   * l2 error of the residual @p R against the gradient of
+   * assembler.energy(), of the tangent @p K against the derivative of
+   * assembler.assemble()'s residual (column by column, entries outside
+   * @p K's pattern counted as 0), and max |K - K^T| / max |K|. The
+   * assembler needs energy(u, lambda) and assemble(u, lambda, R, K*).
+   */
+  struct FiniteDifferenceErrors
+  {
+    double residual = 0., tangent = 0., asymmetry = 0.;
+  };
+
+  template <typename Assembler, typename Vector, typename Matrix>
+  FiniteDifferenceErrors
+  finite_difference_errors(const Assembler &assembler,
+                           const Vector    &u,
+                           const double     lambda,
+                           const Vector    &R,
+                           const Matrix    &K,
+                           const double     h = 1e-6)
+  {
+    FiniteDifferenceErrors e;
+    const auto             n = u.size();
+    Vector                 up(u), um(u), Rp(n), Rm(n), diff(R);
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        up[i] += h;
+        um[i] -= h;
+        diff[i] -=
+          (assembler.energy(up, lambda) - assembler.energy(um, lambda)) /
+          (2 * h);
+        up[i] = um[i] = u[i];
+      }
+    e.residual = diff.l2_norm() / R.l2_norm();
+
+    const auto &pattern = K.get_sparsity_pattern();
+    double      err2 = 0., norm2 = 0.;
+    for (std::size_t j = 0; j < n; ++j)
+      {
+        up[j] += h;
+        um[j] -= h;
+        assembler.assemble(up, lambda, Rp, nullptr);
+        assembler.assemble(um, lambda, Rm, nullptr);
+        up[j] = um[j] = u[j];
+        for (std::size_t i = 0; i < n; ++i)
+          {
+            const double fd = (Rp[i] - Rm[i]) / (2 * h);
+            const double k  = pattern.exists(i, j) ? K(i, j) : 0.;
+            err2 += (k - fd) * (k - fd);
+            norm2 += k * k;
+          }
+      }
+    e.tangent = std::sqrt(err2 / norm2);
+
+    double asym = 0.;
+    for (std::size_t i = 0; i < n; ++i)
+      for (auto entry = K.begin(i); entry != K.end(i); ++entry)
+        asym = std::max(asym, std::abs(entry->value() - K(entry->column(), i)));
+    e.asymmetry = asym / K.linfty_norm();
+    return e;
   }
 
 #ifdef SOURCE_DIR
