@@ -52,9 +52,10 @@ namespace TissueContact
     double
     UncoupledMaterial::psi(const Invariants &I) const
     {
-      const double p = 1. / std::cbrt(I.I3);
+      const double p = 1. / std::cbrt(I.I3), J = std::sqrt(I.I3);
+      // U(J) written in I3 = J^2 (VolumetricEnergy::U, rounded as tested)
       return psi_isochoric(p * I.I1, p * p * I.I2) +
-             (pointwise_volume ? VolumetricEnergy{kappa}.U(std::sqrt(I.I3)) :
+             (pointwise_volume ? 0.25 * kappa * (I.I3 - 1. - 2. * std::log(J)) :
                                  0.);
     }
 
