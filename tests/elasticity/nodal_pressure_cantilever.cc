@@ -16,7 +16,7 @@
 //
 // Measured (prm/studies/locking_free.prm, doc/users/choosing.md): on three
 // meshes of this geometry the displacement-only element's error stays at
-// 0.46-0.50, the vertex volume term's falls from 0.20 to 0.15 and 0.076.
+// 0.46-0.50, the vertex volume term's falls from 0.20 to 0.15 and 0.075.
 
 #include "../tests.h"
 
@@ -85,14 +85,15 @@ main(int argc, char **argv)
       std::ostringstream log;
       StaticSimulation   sim(Scene::SceneParameters::from_string(scene(term)),
                            log);
-      const SolveStatistics stats = sim.solve_quietly();
-      const double          W     = sim.problem().strain_energy(sim.solution());
-      const double          error = std::abs(W - reference) / reference;
+      sim.solve_quietly();
+      const double W     = sim.problem().strain_energy(sim.solution());
+      const double error = std::abs(W - reference) / reference;
+      // (the iteration counts are left out: at this Poisson's ratio the
+      // displacement-only element's Newton path moves with rounding)
       deallog << "Volumetric term = " << term << ": " << sim.problem().n_dofs()
               << " unknowns, strain energy " << std::setprecision(3) << W
               << ", relative error " << std::setprecision(2) << error
               << (error > 0.3 ? " (> 30 %)" : "") << std::setprecision(6)
-              << ", " << stats.increments << " increments, "
-              << stats.newton_iterations << " Newton iterations" << std::endl;
+              << std::endl;
     }
 }
