@@ -28,7 +28,9 @@ script removes before it runs the program:
                                        # one curve per value (per combination
                                        # of values) of these swept entries;
                                        # default: the first swept entry
-      set Key       = bottom left      # gnuplot's key position (top right)
+      set Key       = bottom left      # gnuplot's key position and layout
+                                       # (top right; long titles fit
+                                       # better with "Left reverse")
     end
 
 Each case runs `tissue-contact case.prm` in its own folder under
@@ -271,7 +273,8 @@ def main():
                       f"set output '{stem}.png'\n"
                       f"set xlabel '{x.split('&')[0].strip()}'\n"
                       f"set ylabel '{y}'\n"
-                      f"set key {study.get('Key', 'top right')}\n"
+                      f"set key {study.get('Key', 'top right')} "
+                      f"font ',9' samplen 2\n"
                       f"set grid\n"
                       + ("set logscale xy\n" if scale and scale[0] == "loglog"
                          else "")
