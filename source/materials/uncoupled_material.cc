@@ -12,7 +12,24 @@ namespace TissueContact
     double
     VolumetricEnergy::U(const double J) const
     {
-      return 0.25 * kappa * (J * J - 1. - 2. * std::log(J));
+      // J^2 - 1 - 2 ln J = e^2 + 2 (e - ln(1 + e)) with e = J - 1, without
+      // the cancellation of the first form, whose terms are each about 2e:
+      // near J = 1 it loses all digits of U below 1e-16 kappa, which at
+      // kappa = 5e6 drowned the energy changes of the last Newton steps
+      // (doc/theory/08-nodal-pressure.md sec. 8.4)
+      const double e = J - 1.;
+      double       d; // e - ln(1 + e)
+      if (std::abs(e) < 0.1)
+        {
+          // sum_{k >= 2} (-1)^k e^k / k, to e^21 (relative 1e-21)
+          double term = e * e, sum = 0.;
+          for (unsigned int k = 2; k <= 21; ++k, term *= -e)
+            sum += term / k;
+          d = sum;
+        }
+      else
+        d = e - std::log1p(e);
+      return 0.25 * kappa * (e * e + 2. * d);
     }
 
 
@@ -52,10 +69,9 @@ namespace TissueContact
     double
     UncoupledMaterial::psi(const Invariants &I) const
     {
-      const double p = 1. / std::cbrt(I.I3), J = std::sqrt(I.I3);
-      // U(J) written in I3 = J^2 (VolumetricEnergy::U, rounded as tested)
+      const double p = 1. / std::cbrt(I.I3);
       return psi_isochoric(p * I.I1, p * p * I.I2) +
-             (pointwise_volume ? 0.25 * kappa * (I.I3 - 1. - 2. * std::log(J)) :
+             (pointwise_volume ? VolumetricEnergy{kappa}.U(std::sqrt(I.I3)) :
                                  0.);
     }
 

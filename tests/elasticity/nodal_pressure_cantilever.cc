@@ -16,7 +16,7 @@
 //
 // Measured (prm/studies/locking_free.prm, doc/users/choosing.md): on three
 // meshes of this geometry the displacement-only element's error stays at
-// 0.46-0.50, the vertex volume term's falls from 0.20 to 0.15 and 0.075.
+// 0.46-0.50, the vertex volume term's falls from 0.20 to 0.15 and 0.076.
 
 #include "../tests.h"
 
