@@ -1,6 +1,6 @@
 // A cube of side 1 clamped on its face x = 0: the short cantilever of the
 // nearly incompressible locking test (tests/elasticity/
-// nodal_pressure_cantilever.cc, doc/theory/08-nodal-pressure.md). An
+// incompressible_cantilever.cc, doc/theory/08-nodal-pressure.md). An
 // unstructured mesh: P1 tetrahedra lock on it as Poisson's ratio approaches
 // 1/2. Physical groups: volume 1 (the block), surface 1 (the clamped face
 // x = 0). The parameter h is the element size:

@@ -1,4 +1,5 @@
 #include <tissue_contact/elasticity/elastic_assembler.h>
+#include <tissue_contact/materials/uncoupled_material.h>
 
 #include <deal.II/base/parallel.h>
 #include <deal.II/base/work_stream.h>
@@ -25,6 +26,8 @@ namespace TissueContact
         // stored [p * 3 + i]), D B_a, and S grad N_a
         std::vector<std::array<double, 18>> B, DB;
         std::vector<Tensor<1, 3>>           Sg;
+        // dv_e/dx_a of the mean dilatation (doc/theory/09, (D2))
+        std::vector<Tensor<1, 3>> dv;
       };
 
       struct CopyData
@@ -40,16 +43,19 @@ namespace TissueContact
         {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
 
       /**
-       * Add the element terms of a vertex pressure (N3), (N5) of
-       * doc/theory/08-nodal-pressure.md: @f$S_p = \bar p J C^{-1}@f$ and,
-       * when @p CC is not null, @f$\mathbb{C}_p = \bar p J (C^{-1}\otimes
-       * C^{-1} - 2 C^{-1}\odot C^{-1})@f$.
+       * Add the element terms of a pressure @f$\bar p@f$ constant over the
+       * element, the mean of its vertex pressures ((N3), (N5) of
+       * doc/theory/08-nodal-pressure.md) or its mean dilatation's
+       * ((D3), (D4) of doc/theory/09-mean-dilatation.md):
+       * @f$S_p = \bar p J C^{-1}@f$ and, when @p CC is not null,
+       * @f$\mathbb{C}_p = \bar p J (C^{-1}\otimes C^{-1} - 2 C^{-1}\odot
+       * C^{-1})@f$.
        */
       void
-      add_vertex_pressure(const Tensor<2, 3>    &F,
-                          const double           p,
-                          SymmetricTensor<2, 3> &S,
-                          SymmetricTensor<4, 3> *CC)
+      add_pressure(const Tensor<2, 3>    &F,
+                   const double           p,
+                   SymmetricTensor<2, 3> &S,
+                   SymmetricTensor<4, 3> *CC)
       {
         const SymmetricTensor<2, 3> Ci = invert(symmetrize(transpose(F) * F));
         const double                pJ = p * determinant(F);
@@ -152,7 +158,18 @@ namespace TissueContact
                 grad_N[(c * n_q + q) * n_nodes + local_node[k]] =
                   fe_values.shape_grad(k, q);
 
-          if (b->material != nullptr && b->nodal_bulk_modulus > 0.)
+          using VolumeTerm = BodyData::VolumeTerm;
+          if (b->material != nullptr &&
+              b->volume_term == VolumeTerm::element_average)
+            {
+              AssertThrow(cell_hyperelastic[c] != nullptr &&
+                            b->bulk_modulus > 0,
+                          ExcInternalError());
+              mean_dilatation_kappa.resize(n_cells, 0.);
+              mean_dilatation_kappa[c] = b->bulk_modulus;
+            }
+          if (b->material != nullptr &&
+              b->volume_term == VolumeTerm::nodal_average)
             {
               AssertThrow(disc.degree == 1 && n_q == 1 && n_nodes == 4,
                           ExcMessage(
@@ -160,13 +177,13 @@ namespace TissueContact
                             std::to_string(cell->material_id()) +
                             ") integrates the volume term at the vertices of "
                             "linear tetrahedra: it needs Discretization/"
-                            "Polynomial degree = 1 (P2 locks much less; use "
-                            "Volumetric term = pointwise with it)"));
+                            "Polynomial degree = 1 (on P2 meshes use "
+                            "Volumetric term = element average)"));
               AssertThrow(cell_hyperelastic[c] != nullptr, ExcInternalError());
               NodalPressure::Element e;
               e.body  = cell->material_id();
               e.V0    = fe_values.JxW(0);
-              e.kappa = b->nodal_bulk_modulus;
+              e.kappa = b->bulk_modulus;
               for (unsigned int k = 0; k < n_local; ++k)
                 e.dofs[local_node[k] * 3 + local_component[k]] = dofs[k];
               for (unsigned int a = 0; a < 4; ++a)
@@ -243,6 +260,25 @@ namespace TissueContact
     }
 
 
+    double
+    ElasticAssembler::mean_dilatation(const unsigned int    c,
+                                      const Vector<double> &u,
+                                      double               &V) const
+    {
+      double v = 0.;
+      V        = 0.;
+      for (unsigned int q = 0; q < n_q; ++q)
+        {
+          const double J = determinant(deformation_gradient(c, q, u));
+          if (!(J > 0.))
+            return 0.;
+          v += J * JxW[c * n_q + q];
+          V += JxW[c * n_q + q];
+        }
+      return v / V;
+    }
+
+
     const BodyData *
     ElasticAssembler::body(const types::material_id id) const
     {
@@ -316,6 +352,25 @@ namespace TissueContact
           SymmetricTensor<2, 3>                  S;
           SymmetricTensor<4, 3>                  CC;
 
+          // the mean dilatation's pressure and U''/V_e (doc/theory/09)
+          const double kappa_e =
+            mean_dilatation_kappa.empty() ? 0. : mean_dilatation_kappa[c];
+          double p_e = 0., ddU_V = 0.;
+          if (kappa_e > 0.)
+            {
+              double       V0    = 0.;
+              const double J_bar = mean_dilatation(c, u, V0);
+              if (!(J_bar > 0.))
+                {
+                  copy.valid = false;
+                  return;
+                }
+              const Materials::VolumetricEnergy U{kappa_e};
+              p_e   = U.dU(J_bar);
+              ddU_V = U.ddU(J_bar) / V0;
+              s.dv.assign(n_nodes, Tensor<1, 3>());
+            }
+
           for (unsigned int q = 0; q < n_q; ++q)
             {
               const Tensor<2, 3> F = deformation_gradient(c, q, u);
@@ -335,14 +390,25 @@ namespace TissueContact
                                   X,
                                   S,
                                   K != nullptr ? &CC : nullptr);
+                  if (kappa_e > 0.)
+                    {
+                      add_pressure(F, p_e, S, K != nullptr ? &CC : nullptr);
+                      if (K != nullptr)
+                        {
+                          // dv_e/dx_a += w cof(F) grad N_a   (D2)
+                          const Tensor<2, 3> cof =
+                            determinant(F) * transpose(invert(F));
+                          for (unsigned int a = 0; a < n_nodes; ++a)
+                            s.dv[a] += w * (cof * g[a]);
+                        }
+                    }
                   const int k = nodal ? nodal_element[c] : -1;
                   if (k >= 0)
                     {
-                      add_vertex_pressure(F,
-                                          nodal->element_pressure(vertex_state,
-                                                                  k),
-                                          S,
-                                          K != nullptr ? &CC : nullptr);
+                      add_pressure(F,
+                                   nodal->element_pressure(vertex_state, k),
+                                   S,
+                                   K != nullptr ? &CC : nullptr);
                       if (K != nullptr)
                         {
                           // dv_e/dx_b = V0_e cof(F) grad N_b   (N2)
@@ -436,6 +502,17 @@ namespace TissueContact
                   for (unsigned int k = 0; k < 3; ++k)
                     copy.K(local_index[b * 3 + k], local_index[a * 3 + i]) =
                       copy.K(local_index[a * 3 + i], local_index[b * 3 + k]);
+          if (K != nullptr && kappa_e > 0.)
+            // U''(J_bar) / V_e dv_e/dx_a (x) dv_e/dx_b   (D4)
+            for (unsigned int a = 0; a < n_nodes; ++a)
+              for (unsigned int i = 0; i < 3; ++i)
+                {
+                  const double da = ddU_V * s.dv[a][i];
+                  for (unsigned int b = 0; b < n_nodes; ++b)
+                    for (unsigned int k = 0; k < 3; ++k)
+                      copy.K(local_index[a * 3 + i], local_index[b * 3 + k]) +=
+                        da * s.dv[b][k];
+                }
         };
 
       const bool by_position =
@@ -540,14 +617,24 @@ namespace TissueContact
           W += nodal->energy(state);
         }
       for (const unsigned int c : deformable_cells)
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const Tensor<2, 3> F = deformation_gradient(c, q, u);
-            if (!(determinant(F) > 0.))
-              return std::numeric_limits<double>::infinity();
-            W +=
-              cell_material[c]->energy(F, X_q[c * n_q + q]) * JxW[c * n_q + q];
-          }
+        {
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const Tensor<2, 3> F = deformation_gradient(c, q, u);
+              if (!(determinant(F) > 0.))
+                return std::numeric_limits<double>::infinity();
+              W += cell_material[c]->energy(F, X_q[c * n_q + q]) *
+                   JxW[c * n_q + q];
+            }
+          if (!mean_dilatation_kappa.empty() && mean_dilatation_kappa[c] > 0.)
+            {
+              // V_e U(J_bar_e)   (D1)
+              double       V0    = 0.;
+              const double J_bar = mean_dilatation(c, u, V0);
+              W += V0 * Materials::VolumetricEnergy{mean_dilatation_kappa[c]}.U(
+                          J_bar);
+            }
+        }
       return W - load_factor * (f_ext * u);
     }
 
@@ -615,6 +702,15 @@ namespace TissueContact
                   sigma += cell_material[c]->first_piola_kirchhoff(F, X) *
                            transpose(F) * (w / Jq);
                 }
+            }
+          if (!mean_dilatation_kappa.empty() && mean_dilatation_kappa[c] > 0. &&
+              J > 0.)
+            {
+              // the element's volume term and pressure (doc/theory/09)
+              const Materials::VolumetricEnergy U{mean_dilatation_kappa[c]};
+              psi += U.U(J / volume) * volume;
+              sigma += U.dU(J / volume) * volume *
+                       Tensor<2, 3>(unit_symmetric_tensor<3>());
             }
           if (nodal && nodal_element[c] >= 0 && vertex_valid)
             {

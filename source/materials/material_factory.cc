@@ -96,8 +96,15 @@ namespace TissueContact
         "share of its elements (Bonet and Burton's average nodal pressure "
         "tetrahedron, a mixed u-p formulation whose pressure is eliminated "
         "vertex by vertex; doc/theory/08-nodal-pressure.md), which does "
-        "not lock. P1 only; it widens the tangent's sparsity pattern.",
-        Patterns::Selection("pointwise|nodal average"));
+        "not lock. P1 only; it widens the tangent's sparsity pattern. "
+        "element average: U of each element's mean volume ratio (the mean "
+        "dilatation, a P2-P0 mixed u-p formulation whose pressure is "
+        "eliminated element by element; doc/theory/09-mean-dilatation.md), "
+        "for P2 meshes at Poisson's ratios from about 0.49 on, with at "
+        "least two elements across the thinnest part (it is too soft on "
+        "coarser meshes and for compressible tissue); on P1 meshes it is the "
+        "same as pointwise.",
+        Patterns::Selection("pointwise|nodal average|element average"));
       prm.enter_subsection("Fiber");
       prm.add_parameter("Enabled",
                         fiber,
@@ -133,16 +140,16 @@ namespace TissueContact
                   ExcMessage("Formulation = uncoupled exists for neo-Hookean, "
                              "Mooney-Rivlin and Veronda, not for the model '" +
                              b.model + "'"));
-      AssertThrow(!b.nodal_volume() || uncoupled,
-                  ExcMessage("Volumetric term = nodal average needs "
-                             "Formulation = uncoupled (it integrates the "
-                             "volume term U(J) of the uncoupled forms at the "
-                             "vertices); the model '" +
+      AssertThrow(b.volumetric_term == "pointwise" || uncoupled,
+                  ExcMessage("Volumetric term = " + b.volumetric_term +
+                             " needs Formulation = uncoupled (it moves the "
+                             "volume term U(J) of the uncoupled forms out of "
+                             "the quadrature points); the model '" +
                              b.model +
                              "' is in Formulation = " + b.formulation));
       if (b.model == "rigid")
         return nullptr;
-      const bool pointwise = !b.nodal_volume();
+      const bool pointwise = b.volumetric_term == "pointwise";
       // magnitudes that overflow the energy (exp(beta (I1 - 3)), squares
       // of moduli) are refused by name, not met later as an inverted
       // element or a failed line search

@@ -429,12 +429,17 @@ namespace TissueContact
       std::map<types::material_id, Elasticity::BodyData> data;
       for (unsigned int i = 0; i < parameters.bodies.size(); ++i)
         {
-          const auto &b = parameters.bodies[i];
-          data[b.id]    = {materials[i].get(),
-                           b.density,
-                           !b.prescribed_rigid(),
-                        b.material.nodal_volume() ? b.material.bulk_modulus :
-                                                       0.};
+          const auto &b    = parameters.bodies[i];
+          using VolumeTerm = Elasticity::BodyData::VolumeTerm;
+          data[b.id]       = {materials[i].get(),
+                              b.density,
+                              !b.prescribed_rigid(),
+                        b.material.nodal_volume() ?
+                                VolumeTerm::nodal_average :
+                                (b.material.element_volume() ?
+                                   VolumeTerm::element_average :
+                                   VolumeTerm::in_material),
+                              b.material.bulk_modulus};
         }
       return data;
     }

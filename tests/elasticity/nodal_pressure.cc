@@ -6,6 +6,10 @@
 // the residual, and is symmetric; the residual vanishes at rest; under a
 // uniform dilation (every J_a = J_e) the energy equals the pointwise
 // formulation's; the widened sparsity pattern is counted; P2 is refused.
+// The element's mean dilatation (doc/theory/09-mean-dilatation.md) on the
+// same mesh in P2: residual = FD gradient of (D1), tangent (D3)-(D4) = FD of
+// the residual, symmetric, zero at rest, the pointwise energy under a uniform
+// dilation; on P1 it is the pointwise formulation (J is constant).
 
 #include "../tests.h"
 
@@ -57,12 +61,18 @@ main(int argc, char **argv)
 
   const Discretization  disc(tria, 1);
   Elasticity::DeadLoads loads;
-  loads.gravity = Tensor<1, 3>({0., 0., -2.});
-  Elasticity::ElasticAssembler assembler(
-    disc, {{0, {&m0, 3., true, kappa0}}, {1, {&m1, 1., true, kappa1}}}, loads);
-  Elasticity::ElasticAssembler pointwise(disc,
-                                         {{0, {&p0, 3.}}, {1, {&p1, 1.}}},
-                                         loads);
+  loads.gravity    = Tensor<1, 3>({0., 0., -2.});
+  using VolumeTerm = Elasticity::BodyData::VolumeTerm;
+  const std::map<types::material_id, Elasticity::BodyData> nodal_bodies = {
+    {0, {&m0, 3., true, VolumeTerm::nodal_average, kappa0}},
+    {1, {&m1, 1., true, VolumeTerm::nodal_average, kappa1}}};
+  const std::map<types::material_id, Elasticity::BodyData> element_bodies = {
+    {0, {&m0, 3., true, VolumeTerm::element_average, kappa0}},
+    {1, {&m1, 1., true, VolumeTerm::element_average, kappa1}}};
+  const std::map<types::material_id, Elasticity::BodyData> pointwise_bodies = {
+    {0, {&p0, 3.}}, {1, {&p1, 1.}}};
+  Elasticity::ElasticAssembler assembler(disc, nodal_bodies, loads);
+  Elasticity::ElasticAssembler pointwise(disc, pointwise_bodies, loads);
   const SparsityPattern       &pattern = assembler.sparsity_pattern();
   deallog << "unknowns " << disc.n_dofs() << ", stiffness entries: "
           << disc.sparsity_pattern.n_nonzero_elements()
@@ -101,18 +111,59 @@ main(int argc, char **argv)
   deallog << "tangent asymmetry max |K - K^T| / max|K| "
           << error_bound(e.asymmetry) << std::endl;
 
-  // P2 is refused by name
+  // on P1 the mean dilatation is the pointwise volume term
+  {
+    Elasticity::ElasticAssembler element(disc, element_bodies, loads);
+    Vector<double>               R_point(disc.n_dofs()), R_element(R_point);
+    pointwise.assemble(u, lambda, R_point, nullptr);
+    element.assemble(u, lambda, R_element, nullptr);
+    const double W_point = pointwise.energy(u, lambda);
+    R_element -= R_point;
+    deallog << "P1, element average against pointwise: energy "
+            << error_bound(std::abs(element.energy(u, lambda) - W_point) /
+                           std::abs(W_point))
+            << ", residual " << error_bound(R_element.l2_norm() / R.l2_norm())
+            << std::endl;
+  }
+
+  // P2 with the nodal average is refused by name
+  const Discretization disc2(tria, 2);
   try
     {
-      const Discretization         disc2(tria, 2);
-      Elasticity::ElasticAssembler a2(disc2,
-                                      {{0, {&m0, 3., true, kappa0}},
-                                       {1, {&m1, 1., true, kappa1}}},
-                                      loads);
+      Elasticity::ElasticAssembler a2(disc2, nodal_bodies, loads);
       deallog << "P2 accepted (wrong)" << std::endl;
     }
   catch (const std::exception &e)
     {
       deallog << "P2: " << error_message(e) << std::endl;
     }
+
+  // P2 with the element's mean dilatation
+  Elasticity::ElasticAssembler element(disc2, element_bodies, loads);
+  Elasticity::ElasticAssembler point2(disc2, pointwise_bodies, loads);
+  Vector<double>               u2(disc2.n_dofs()), R2(disc2.n_dofs());
+  SparseMatrix<double>         K2(element.sparsity_pattern());
+  element.assemble(u2, 0., R2, &K2);
+  deallog << "P2, element average: unknowns " << disc2.n_dofs()
+          << ", at rest |R| " << error_bound(R2.l2_norm()) << std::endl;
+  const std::vector<Point<3>> X2         = disc2.support_points();
+  const std::vector<unsigned> component2 = disc2.dof_components();
+  for (types::global_dof_index i = 0; i < disc2.n_dofs(); ++i)
+    u2[i] = 0.1 * X2[i][component2[i]];
+  deallog << "P2, element average: uniform dilation, relative difference to "
+             "pointwise "
+          << error_bound(
+               std::abs(element.energy(u2, 0.) - point2.energy(u2, 0.)) /
+               point2.energy(u2, 0.))
+          << std::endl;
+  for (auto &v : u2)
+    v = random_value(-0.05, 0.05);
+  deallog << "P2, element average: random displacement valid "
+          << element.assemble(u2, lambda, R2, &K2) << std::endl;
+  const FiniteDifferenceErrors e2 =
+    finite_difference_errors(element, u2, lambda, R2, K2);
+  deallog << "P2, element average: residual vs FD gradient of the energy "
+          << error_bound(e2.residual, -8) << ", tangent vs FD of the residual "
+          << error_bound(e2.tangent, -8) << ", asymmetry "
+          << error_bound(e2.asymmetry) << std::endl;
 }

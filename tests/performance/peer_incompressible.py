@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The locking-free reference of tests/elasticity/nodal_pressure_cantilever
+"""The locking-free reference of tests/elasticity/incompressible_cantilever
 (a peer computation, not a test): the nearly incompressible short
 cantilever solved by FEniCSx (Debian's python3-dolfinx) with a mixed
 element that does not lock, on a sequence of meshes.

@@ -30,10 +30,21 @@ namespace TissueContact
        * deformable and free rigid bodies, false for a body whose motion is
        * prescribed (its loads would only enter the reactions). */
       bool loaded = true;
-      /** The bulk modulus @f$\kappa@f$ of a body whose volume term is
-       * integrated at the vertices (doc/theory/08-nodal-pressure.md; its
-       * material then evaluates the isochoric energy alone), 0 otherwise. */
-      double nodal_bulk_modulus = 0.;
+      /** Where the volume term @f$U(J)@f$ of an uncoupled material is
+       * integrated: in the material (at the quadrature points), at the
+       * vertices (doc/theory/08-nodal-pressure.md) or as the element's mean
+       * dilatation (doc/theory/09-mean-dilatation.md). In the last two the
+       * material evaluates the isochoric energy alone. */
+      enum class VolumeTerm
+      {
+        in_material,
+        nodal_average,
+        element_average
+      };
+      VolumeTerm volume_term = VolumeTerm::in_material;
+      /** The bulk modulus @f$\kappa@f$ of @f$U@f$ where volume_term is not
+       * in_material. */
+      double bulk_modulus = 0.;
     };
 
     /** Dead external loads at load factor 1: body force per unit mass and
@@ -66,10 +77,15 @@ namespace TissueContact
      * whose gradient the residual is. Assembly runs on all cores with
      * WorkStream. Vectors and matrices are assembled without constraints;
      * the solver imposes prescribed values. Bodies with
-     * BodyData::nodal_bulk_modulus > 0 have their volume term at the
+     * BodyData::VolumeTerm::nodal_average have their volume term at the
      * vertices (NodalPressure, doc/theory/08-nodal-pressure.md): the
      * elements get the mean vertex pressure, the tangent the vertex
-     * stiffness, whose couplings sparsity_pattern() contains.
+     * stiffness, whose couplings sparsity_pattern() contains. Bodies with
+     * BodyData::VolumeTerm::element_average have it as
+     * @f$V_e U(\bar J_e)@f$ of each element's mean dilatation
+     * @f$\bar J_e = v_e / V_e@f$ (doc/theory/09-mean-dilatation.md): the
+     * element's pressure @f$\bar p_e = U'(\bar J_e)@f$ in its stress and a
+     * rank-one term in its tangent.
      */
     class ElasticAssembler
     {
@@ -175,6 +191,9 @@ namespace TissueContact
       std::vector<const Materials::HyperelasticMaterial *> cell_hyperelastic;
       std::vector<unsigned int> local_component, local_node; // of dof k
       std::vector<unsigned int> deformable_cells;
+      // kappa of each cell whose volume term is its mean dilatation, 0 for
+      // the others; empty if there are none
+      std::vector<double> mean_dilatation_kappa;
       // positions of cell c's entry (i, j) in the values of a matrix on
       // positions_pattern: [c][i * n_local + j] (use_matrix_pattern())
       std::vector<unsigned int> positions;
@@ -191,6 +210,14 @@ namespace TissueContact
        * such a body is inverted. */
       NodalPressure::State
       nodal_state(const Vector<double> &u, bool &valid) const;
+
+      /** @f$\bar J_e = v_e / V_e@f$ of cell @p c (doc/theory/09, (D1)) and
+       * its reference volume @p V; 0 if @f$\det F \le 0@f$ at one of its
+       * quadrature points. */
+      double
+      mean_dilatation(const unsigned int    c,
+                      const Vector<double> &u,
+                      double               &V) const;
 
       /** @f$F = I + \sum_k u_k\, e_{c_k}\otimes\nabla N_{a_k}@f$ at
        * quadrature point @p q of cell @p c. */

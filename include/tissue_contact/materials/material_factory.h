@@ -45,6 +45,15 @@ namespace TissueContact
       {
         return volumetric_term == "nodal average";
       }
+
+      /** Whether the volume term is each element's mean dilatation's
+       * (Volumetric term = element average,
+       * doc/theory/09-mean-dilatation.md). */
+      bool
+      element_volume() const
+      {
+        return volumetric_term == "element average";
+      }
     };
 
     /**
