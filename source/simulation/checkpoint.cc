@@ -109,14 +109,42 @@ namespace TissueContact
                         const std::string &parameters)
   {
     // the lines of the effective parameters that matter: not the comment
-    // naming the file, not the output folder
+    // naming the file, not the output folder, not the solver's entries
+    // (subsections Newton and Linear solver and theirs)
     const auto lines = [](const std::string &text) {
       std::vector<std::string> kept;
       std::istringstream       in(text);
+      unsigned int             depth = 0, solver_depth = 0; // 0: outside
       for (std::string line; std::getline(in, line);)
-        if (line.rfind("#", 0) != 0 &&
-            line.find("set Directory") == std::string::npos)
-          kept.push_back(line);
+        {
+          const auto        first = line.find_first_not_of(' ');
+          const std::string word =
+            first == std::string::npos ? "" : line.substr(first);
+          if (word.rfind("subsection ", 0) == 0)
+            {
+              ++depth;
+              if (solver_depth == 0 && depth == 1 &&
+                  (word == "subsection Newton" ||
+                   word == "subsection Linear solver"))
+                solver_depth = depth;
+              if (solver_depth == 0)
+                kept.push_back(line);
+              continue;
+            }
+          if (word == "end")
+            {
+              if (solver_depth == 0)
+                kept.push_back(line);
+              if (depth == solver_depth)
+                solver_depth = 0;
+              if (depth > 0)
+                --depth;
+              continue;
+            }
+          if (solver_depth == 0 && word.rfind("#", 0) != 0 &&
+              word.rfind("set Directory", 0) != 0)
+            kept.push_back(line);
+        }
       return kept;
     };
     const auto a = lines(checkpoint.parameters), b = lines(parameters);
@@ -132,7 +160,9 @@ namespace TissueContact
                     ExcMessage("the parameter file differs from the one of "
                                "the run that wrote the checkpoint: '" +
                                trim(y) + "' instead of '" + trim(x) +
-                               "'; restart with the same parameters"));
+                               "'; restart with the same parameters (only "
+                               "the entries of Newton and Linear solver may "
+                               "change)"));
       }
   }
 

@@ -249,4 +249,35 @@ main(int argc, char **argv)
     {
       deallog << "other parameters: " << error_message(e) << std::endl;
     }
+
+  // other solver entries (Newton, Linear solver) are accepted; with them,
+  // another material is still refused
+  const Checkpoint block_checkpoint =
+    Checkpoint::read(checkpoint_file("killed", "block"));
+  std::string solver = block("killed") + "subsection Newton\n"
+                                         "  set Residual tolerance = 1e-5\n"
+                                         "end\n"
+                                         "subsection Linear solver\n"
+                                         "  set Type = GMRES+AMG\n"
+                                         "end\n";
+  for (const bool other_material : {false, true})
+    try
+      {
+        if (other_material)
+          solver.replace(solver.find("set Mu      = 100"),
+                         17,
+                         "set Mu      = 200");
+        check_same_parameters(
+          block_checkpoint,
+          Scene::SceneParameters::from_string(solver).effective_parameters);
+        deallog << "other solver entries"
+                << (other_material ? " and another material" : "")
+                << ": accepted" << std::endl;
+      }
+    catch (const std::exception &e)
+      {
+        deallog << "other solver entries"
+                << (other_material ? " and another material" : "") << ": "
+                << error_message(e) << std::endl;
+      }
 }

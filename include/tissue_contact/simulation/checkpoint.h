@@ -61,7 +61,10 @@ namespace TissueContact
 
   /** Throw, naming the first difference, if @p parameters (a scene's
    * effective parameters) differ from those of the run that wrote
-   * @p checkpoint, the output folder (Output/Directory) aside. */
+   * @p checkpoint, aside from the output folder (Output/Directory) and the
+   * entries of the subsections "Newton" and "Linear solver": how the
+   * equations are solved may change on a restart (a looser tolerance, another
+   * linear solver), the equations and the load path may not. */
   void
   check_same_parameters(const Checkpoint  &checkpoint,
                         const std::string &parameters);
