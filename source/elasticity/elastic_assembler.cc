@@ -1,3 +1,4 @@
+#include <tissue_contact/base/polar_rotation.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/materials/uncoupled_material.h>
 
@@ -108,15 +109,21 @@ namespace TissueContact
       cell_material.resize(n_cells);
       cell_hyperelastic.resize(n_cells);
 
-      FEValues<3>                          fe_values(disc.mapping,
+      FEValues<3>     fe_values(disc.mapping,
                             disc.fe,
                             disc.stiffness_quadrature,
                             update_values | update_gradients |
                               update_JxW_values | update_quadrature_points);
-      FEFaceValues<3>                      fe_face_values(disc.mapping,
+      FEFaceValues<3> fe_face_values(disc.mapping,
                                      disc.fe,
                                      disc.face_quadrature,
                                      update_values | update_JxW_values);
+      // the reference positions of the nodes (single-rotation elements)
+      FEValues<3> support_values(
+        disc.mapping,
+        disc.fe,
+        Quadrature<3>(disc.fe.base_element(0).get_unit_support_points()),
+        update_quadrature_points);
       std::vector<types::global_dof_index> dofs(n_local);
       Vector<double>                       local(n_local);
       std::vector<NodalPressure::Element>  nodal_elements;
@@ -157,6 +164,33 @@ namespace TissueContact
               for (unsigned int q = 0; q < n_q; ++q)
                 grad_N[(c * n_q + q) * n_nodes + local_node[k]] =
                   fe_values.shape_grad(k, q);
+
+          if (b->material != nullptr && b->single_rotation)
+            {
+              // K_e of linear elasticity, the nodes and corner gradients
+              // (doc/theory/10, (SR1))
+              AssertThrow(n_nodes >= 4 && n_local == 3 * n_nodes,
+                          ExcInternalError());
+              single_rotation_index.resize(n_cells, -1);
+              const unsigned int k     = single_rotation_X.size() / n_nodes;
+              single_rotation_index[c] = k;
+              support_values.reinit(cell);
+              for (unsigned int I = 0; I < n_nodes; ++I)
+                single_rotation_X.push_back(support_values.quadrature_point(I));
+              single_rotation_grad.resize(4 * (k + 1));
+              SingleRotationElement::corner_gradients(
+                &single_rotation_X[k * n_nodes], &single_rotation_grad[4 * k]);
+              const auto lame = b->material->lame_equivalents();
+              single_rotation_K.resize(std::size_t(k + 1) * n_local * n_local);
+              SingleRotationElement::stiffness(
+                n_nodes,
+                n_q,
+                &grad_N[std::size_t(c) * n_q * n_nodes],
+                &JxW[std::size_t(c) * n_q],
+                lame.first,
+                lame.second,
+                &single_rotation_K[std::size_t(k) * n_local * n_local]);
+            }
 
           using VolumeTerm = BodyData::VolumeTerm;
           if (b->material != nullptr &&
@@ -303,6 +337,26 @@ namespace TissueContact
     }
 
 
+    SingleRotationElement
+    ElasticAssembler::single_rotation_element(const unsigned int    c,
+                                              const Vector<double> &u,
+                                              Point<3>             *x) const
+    {
+      const unsigned int             k    = single_rotation_index[c];
+      const Point<3>                *X    = &single_rotation_X[k * n_nodes];
+      const types::global_dof_index *dofs = &cell_dofs[c * n_local];
+      for (unsigned int I = 0; I < n_nodes; ++I)
+        x[I] = X[I];
+      for (unsigned int j = 0; j < n_local; ++j)
+        x[local_node[j]][local_component[j]] += u[dofs[j]];
+      return SingleRotationElement(
+        n_nodes,
+        &single_rotation_K[std::size_t(k) * n_local * n_local],
+        X,
+        &single_rotation_grad[4 * k]);
+    }
+
+
     bool
     ElasticAssembler::assemble(const Vector<double> &u,
                                const double          load_factor,
@@ -351,6 +405,36 @@ namespace TissueContact
           Materials::MaterialResponse            m;
           SymmetricTensor<2, 3>                  S;
           SymmetricTensor<4, 3>                  CC;
+
+          if (!single_rotation_index.empty() && single_rotation_index[c] >= 0)
+            {
+              // one rotation per element (doc/theory/10, (SR4), (SR5));
+              // inverted where det F <= 0 at a point, as the others
+              std::array<Point<3>, 10>    x;
+              std::array<double, 30>      r;
+              std::array<double, 30 * 30> H;
+              const SingleRotationElement e =
+                single_rotation_element(c, u, x.data());
+              for (unsigned int q = 0; q < n_q; ++q)
+                if (!(determinant(deformation_gradient(c, q, u)) > 0.))
+                  copy.valid = false;
+              if (!copy.valid || !e.gradient(x.data(),
+                                             r.data(),
+                                             K != nullptr ? H.data() : nullptr))
+                {
+                  copy.valid = false;
+                  return;
+                }
+              for (unsigned int p = 0; p < n_local; ++p)
+                {
+                  const unsigned int i = local_index[p];
+                  copy.r[i]            = r[p];
+                  if (K != nullptr)
+                    for (unsigned int q = 0; q < n_local; ++q)
+                      copy.K(i, local_index[q]) = H[p * n_local + q];
+                }
+              return;
+            }
 
           // the mean dilatation's pressure and U''/V_e (doc/theory/09)
           const double kappa_e =
@@ -618,13 +702,26 @@ namespace TissueContact
         }
       for (const unsigned int c : deformable_cells)
         {
+          const bool single =
+            !single_rotation_index.empty() && single_rotation_index[c] >= 0;
           for (unsigned int q = 0; q < n_q; ++q)
             {
               const Tensor<2, 3> F = deformation_gradient(c, q, u);
               if (!(determinant(F) > 0.))
                 return std::numeric_limits<double>::infinity();
-              W += cell_material[c]->energy(F, X_q[c * n_q + q]) *
-                   JxW[c * n_q + q];
+              if (!single)
+                W += cell_material[c]->energy(F, X_q[c * n_q + q]) *
+                     JxW[c * n_q + q];
+            }
+          if (single)
+            {
+              // (SR1)
+              std::array<Point<3>, 10> x;
+              double                   W_e = 0.;
+              if (!single_rotation_element(c, u, x.data())
+                     .energy(x.data(), W_e))
+                return std::numeric_limits<double>::infinity();
+              W += W_e;
             }
           if (!mean_dilatation_kappa.empty() && mean_dilatation_kappa[c] > 0.)
             {
@@ -688,6 +785,19 @@ namespace TissueContact
         {
           double       volume = 0., J = 0., psi = 0.;
           Tensor<2, 3> sigma;
+          // a single-rotation element's rotation (doc/theory/10, (SR1'))
+          Tensor<2, 3> R_e;
+          bool         single =
+            !single_rotation_index.empty() && single_rotation_index[c] >= 0;
+          if (single)
+            {
+              std::array<Point<3>, 10> x;
+              const Tensor<2, 3> F_c = single_rotation_element(c, u, x.data())
+                                         .corner_deformation_gradient(x.data());
+              single = determinant(F_c) > 0.;
+              if (single)
+                R_e = PolarRotation(F_c).R();
+            }
           for (unsigned int q = 0; q < n_q; ++q)
             {
               const Tensor<2, 3> F  = deformation_gradient(c, q, u);
@@ -695,7 +805,23 @@ namespace TissueContact
               const double       w  = JxW[c * n_q + q];
               volume += w;
               J += Jq * w;
-              if (cell_material[c] != nullptr && Jq > 0.)
+              if (single && Jq > 0.)
+                {
+                  // linear elasticity of eps = sym(R^T F) - I, P = R T
+                  const auto [mu, lambda] =
+                    cell_material[c]->lame_equivalents();
+                  const SymmetricTensor<2, 3> eps =
+                    symmetrize(transpose(R_e) * F) - unit_symmetric_tensor<3>();
+                  psi +=
+                    (mu * eps * eps + 0.5 * lambda * trace(eps) * trace(eps)) *
+                    w;
+                  const SymmetricTensor<2, 3> T =
+                    2. * mu * eps +
+                    lambda * trace(eps) * unit_symmetric_tensor<3>();
+                  sigma += R_e * static_cast<Tensor<2, 3>>(T) * transpose(F) *
+                           (w / Jq);
+                }
+              else if (cell_material[c] != nullptr && Jq > 0.)
                 {
                   const Point<3> &X = X_q[c * n_q + q];
                   psi += cell_material[c]->energy(F, X) * w;

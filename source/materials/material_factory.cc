@@ -105,6 +105,19 @@ namespace TissueContact
         "coarser meshes and for compressible tissue); on P1 meshes it is the "
         "same as pointwise.",
         Patterns::Selection("pointwise|nodal average|element average"));
+      prm.add_parameter(
+        "Rotation",
+        rotation,
+        "For Model = corotated: where the rotation R of F = RU is taken. "
+        "pointwise: at every quadrature point (the corotated material, "
+        "doc/theory/03-materials.md sec. 3.6). element: once per element, "
+        "from the deformation of its four corner vertices, with linear "
+        "elasticity in the frame it defines and the element's stiffness "
+        "matrix computed once (the single-rotation element, tet10SR on P2 "
+        "meshes; doc/theory/10-single-rotation.md): cheaper per element, "
+        "but a coarse P2 mesh misses rotations that vary inside an element; "
+        "on P1 meshes both are the same.",
+        Patterns::Selection("pointwise|element"));
       prm.enter_subsection("Fiber");
       prm.add_parameter("Enabled",
                         fiber,
@@ -147,6 +160,11 @@ namespace TissueContact
                              "the quadrature points); the model '" +
                              b.model +
                              "' is in Formulation = " + b.formulation));
+      AssertThrow(b.rotation == "pointwise" ||
+                    (b.model == "corotated" && !b.fiber),
+                  ExcMessage("Rotation = element is a form of the corotated "
+                             "model without fibers; the model is '" +
+                             b.model + "'" + (b.fiber ? " with fibers" : "")));
       if (b.model == "rigid")
         return nullptr;
       const bool pointwise = b.volumetric_term == "pointwise";

@@ -439,7 +439,8 @@ namespace TissueContact
                                 (b.material.element_volume() ?
                                    VolumeTerm::element_average :
                                    VolumeTerm::in_material),
-                              b.material.bulk_modulus};
+                              b.material.bulk_modulus,
+                              b.material.single_rotation()};
         }
       return data;
     }

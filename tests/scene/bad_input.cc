@@ -159,6 +159,9 @@ main(int argc, char **argv)
       "subsection Discretization\n set Polynomial degree = 2\nend\n"
       "subsection Bodies\n subsection Body 0\n  set Formulation = uncoupled\n"
       "  set Volumetric term = nodal average\n end\nend\n");
+  run("single rotation of a model that is not corotated",
+      "subsection Bodies\n subsection Body 0\n  set Rotation = element\n"
+      " end\nend\n");
   run("unknown entry", "subsection Newton\n set Maximum iteration = 3\nend\n");
   run("malformed value",
       "subsection Discretization\n set Polynomial degree = three\nend\n");

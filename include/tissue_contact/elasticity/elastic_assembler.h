@@ -2,6 +2,7 @@
 
 #include <tissue_contact/base/discretization.h>
 #include <tissue_contact/elasticity/nodal_pressure.h>
+#include <tissue_contact/elasticity/single_rotation.h>
 #include <tissue_contact/materials/hyperelastic_material.h>
 #include <tissue_contact/materials/material.h>
 
@@ -45,6 +46,11 @@ namespace TissueContact
       /** The bulk modulus @f$\kappa@f$ of @f$U@f$ where volume_term is not
        * in_material. */
       double bulk_modulus = 0.;
+      /** Whether the body's elements are single-rotation elements
+       * (doc/theory/10-single-rotation.md): linear elasticity with the
+       * material's Lame constants in the frame of one rotation per element,
+       * from its corner vertices (tet10SR on P2 meshes). */
+      bool single_rotation = false;
     };
 
     /** Dead external loads at load factor 1: body force per unit mass and
@@ -85,7 +91,9 @@ namespace TissueContact
      * @f$V_e U(\bar J_e)@f$ of each element's mean dilatation
      * @f$\bar J_e = v_e / V_e@f$ (doc/theory/09-mean-dilatation.md): the
      * element's pressure @f$\bar p_e = U'(\bar J_e)@f$ in its stress and a
-     * rank-one term in its tangent.
+     * rank-one term in its tangent. Bodies with BodyData::single_rotation
+     * are assembled element by element by SingleRotationElement, whose
+     * stiffness matrices are computed once here.
      */
     class ElasticAssembler
     {
@@ -194,6 +202,21 @@ namespace TissueContact
       // kappa of each cell whose volume term is its mean dilatation, 0 for
       // the others; empty if there are none
       std::vector<double> mean_dilatation_kappa;
+      // single-rotation elements: index per cell (-1: not one), and per
+      // index the linear-elastic stiffness [n_local^2], the reference node
+      // positions [n_nodes] and corner gradients [4] (doc/theory/10)
+      std::vector<int>          single_rotation_index;
+      std::vector<double>       single_rotation_K;
+      std::vector<Point<3>>     single_rotation_X;
+      std::vector<Tensor<1, 3>> single_rotation_grad;
+
+      /** The single-rotation element of cell @p c, and the current
+       * positions of its nodes at @p u in @p x. */
+      SingleRotationElement
+      single_rotation_element(const unsigned int    c,
+                              const Vector<double> &u,
+                              Point<3>             *x) const;
+
       // positions of cell c's entry (i, j) in the values of a matrix on
       // positions_pattern: [c][i * n_local + j] (use_matrix_pattern())
       std::vector<unsigned int> positions;

@@ -28,6 +28,7 @@ namespace TissueContact
       std::string formulation     = "coupled";
       double      bulk_modulus    = 1000.;
       std::string volumetric_term = "pointwise";
+      std::string rotation        = "pointwise";
       bool        fiber           = false;
       double      fiber_alpha = 0., fiber_beta = 1.;
       std::string fiber_direction = "1; 0; 0";
@@ -53,6 +54,14 @@ namespace TissueContact
       element_volume() const
       {
         return volumetric_term == "element average";
+      }
+
+      /** Whether the body's elements are single-rotation elements
+       * (Rotation = element, doc/theory/10-single-rotation.md). */
+      bool
+      single_rotation() const
+      {
+        return rotation == "element";
       }
     };
 
