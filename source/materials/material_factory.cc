@@ -114,9 +114,11 @@ namespace TissueContact
         "from the deformation of its four corner vertices, with linear "
         "elasticity in the frame it defines and the element's stiffness "
         "matrix computed once (the single-rotation element, tet10SR on P2 "
-        "meshes; doc/theory/10-single-rotation.md): cheaper per element, "
-        "but a coarse P2 mesh misses rotations that vary inside an element; "
-        "on P1 meshes both are the same.",
+        "meshes; doc/theory/10-single-rotation.md): a third of the assembly "
+        "cost on P2 and as accurate on the beams measured in "
+        "doc/users/choosing.md, but 7.2 kB per element and more Newton "
+        "iterations in large twists; on P1 meshes both are the same "
+        "(pointwise is twice as fast there).",
         Patterns::Selection("pointwise|element"));
       prm.enter_subsection("Fiber");
       prm.add_parameter("Enabled",

@@ -117,10 +117,21 @@ main(int argc, char **argv)
             tria, {n, n, n}, Point<3>(0, 0, 0), Point<3>(1, 1, 1));
           const Discretization disc(tria, degree);
           const Vector<double> u = some_displacement(disc);
+          // every material, and the corotated one again with one rotation
+          // per element (Rotation = element, doc/theory/10)
+          std::vector<std::pair<const Materials::Material *, bool>> cases;
           for (const auto &m : materials)
             {
+              cases.emplace_back(m.get(), false);
+              if (m->name() == "corotated")
+                cases.emplace_back(m.get(), true);
+            }
+          for (const auto &[m, single_rotation] : cases)
+            {
+              Elasticity::BodyData body{m, 1.};
+              body.single_rotation = single_rotation;
               Elasticity::ElasticAssembler assembler(disc,
-                                                     {{0, {m.get(), 1.}}},
+                                                     {{0, body}},
                                                      Elasticity::DeadLoads());
               MultithreadInfo::set_thread_limit(1);
               const double t1 = time_assembly(assembler, disc, u);
@@ -128,7 +139,9 @@ main(int argc, char **argv)
               const double tn = time_assembly(assembler, disc, u);
               std::cout << std::setw(4) << degree << std::setw(10)
                         << tria.n_active_cells() << std::setw(10)
-                        << disc.n_dofs() << std::setw(26) << m->name()
+                        << disc.n_dofs() << std::setw(26)
+                        << (single_rotation ? "corotated, 1 rotation" :
+                                              m->name())
                         << std::fixed << std::setprecision(3) << std::setw(12)
                         << tria.n_active_cells() / t1 / 1e6 << std::setw(12)
                         << tria.n_active_cells() / tn / 1e6 << std::defaultfloat
