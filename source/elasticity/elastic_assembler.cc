@@ -252,6 +252,16 @@ namespace TissueContact
           f_ext.add(dofs, local);
         }
 
+      for (const unsigned int c : deformable_cells)
+        {
+          double volume = 0.;
+          for (unsigned int q = 0; q < n_q; ++q)
+            volume += JxW[c * n_q + q];
+          element_size += std::cbrt(volume);
+        }
+      if (!deformable_cells.empty())
+        element_size /= deformable_cells.size();
+
       if (!nodal_elements.empty())
         {
           nodal = std::make_unique<NodalPressure>(std::move(nodal_elements));

@@ -41,7 +41,11 @@ namespace TissueContact
                << std::setw(6) << std::left << i.step_length << std::right
                << " " << i.linear_iterations;
       else
-        screen << std::defaultfloat << "    converged";
+        screen << std::defaultfloat << "    converged"
+               << (i.at_rounding ?
+                     " to rounding: |R| is at its rounding floor, "
+                     "above the tolerance the load sets" :
+                     "");
       // flushed: a log redirected to a file shows every iteration at once
       screen << std::defaultfloat << std::endl;
 

@@ -227,6 +227,10 @@ namespace TissueContact
               " (" + std::to_string(statistics.tangent_shifts) +
                 " solves with a shifted tangent)" :
               std::string())
+        << (statistics.rounding_convergences > 0 ?
+              ", " + std::to_string(statistics.rounding_convergences) +
+                " increments converged to rounding" :
+              std::string())
         << (statistics.multiplier_updates > 0 ?
               ", " + std::to_string(statistics.multiplier_updates) +
                 " augmented-Lagrangian updates" :

@@ -13,6 +13,14 @@ namespace TissueContact
 {
   namespace Solvers
   {
+    namespace
+    {
+      /** The tolerance is at least this multiple of the residual's
+       * rounding floor (doc/theory/04-solver.md sec. 4.2.1). */
+      constexpr double rounding_factor = 1.;
+    } // namespace
+
+
     void
     IncrementalNewtonSolver::Parameters::declare_parameters(
       ParameterHandler &prm)
@@ -62,7 +70,11 @@ namespace TissueContact
                         "Converged when |R| on the free DoFs is below this "
                         "fraction (0 ... 0.1) of the force scale (applied "
                         "loads or reactions, whichever is larger); a larger "
-                        "one would accept the unloaded state.",
+                        "one would accept the unloaded state. Where the "
+                        "residual's rounding floor is above it (a body many "
+                        "orders stiffer than the load), up to 1e3 times it, "
+                        "the floor is used and the log says 'converged to "
+                        "rounding' (doc/theory/04-solver.md sec. 4.2.1).",
                         Patterns::Double(0., 0.1));
       prm.add_parameter("Absolute tolerance",
                         absolute_tolerance,
@@ -176,6 +188,14 @@ namespace TissueContact
       Vector<double> R(n), R_trial(n), du(n), rhs(n), u_trial(n);
       const double   f_ext   = problem.external_force_norm(load_factor);
       double         r_first = 0., r_previous = 0., eta_previous = 0.;
+      // full steps in a row that reduced |R| by less than 1 % with the
+      // quasi-viscosity on: the viscosity, not the tangent, sets the step
+      unsigned int viscous_stall = 0;
+      // the rounding floor's perturbation and its image
+      const double   length_scale = problem.length_scale();
+      Vector<double> delta(length_scale > 0. ? n : 0),
+        K_delta(length_scale > 0. ? n : 0);
+      double last_step = 0.;
       // the energy at u when the line search computed it at the accepted
       // step (the start of the next line search), NaN otherwise
       double E_at_u = std::numeric_limits<double>::quiet_NaN();
@@ -207,9 +227,34 @@ namespace TissueContact
             throw SolveFailed(
               "the residual is not finite: an element is crushed to zero "
               "volume (J = 0) or its material law overflowed");
-          const double tolerance =
+          const double load_tolerance =
             std::max(parameters.absolute_tolerance,
                      parameters.residual_tolerance * std::max(f_ext, reaction));
+          // the residual's rounding floor (doc/theory/04-solver.md sec.
+          // 4.2.1): |K delta| on the free DoFs for a change of the free
+          // unknowns at rounding level, delta_j = +-eps h, which is how much
+          // the rounding of F = I + grad u moves the internal forces. A
+          // tolerance below it cannot be met; it replaces the tolerance up
+          // to 1e3 times the load's (beyond that the solve fails and says
+          // why: the result would not be accurate)
+          double floor = 0.;
+          if (length_scale > 0.)
+            {
+              for (types::global_dof_index i = 0; i < n; ++i)
+                delta[i] = prescribed[i] ?
+                             0. :
+                             std::numeric_limits<double>::epsilon() *
+                               length_scale *
+                               (((i * 2654435761u) >> 7) & 1u ? 1. : -1.);
+              K.vmult(K_delta, delta);
+              for (types::global_dof_index i = 0; i < n; ++i)
+                if (!prescribed[i])
+                  floor += K_delta[i] * K_delta[i];
+              floor = std::sqrt(floor);
+            }
+          const double tolerance =
+            std::max(load_tolerance,
+                     std::min(rounding_factor * floor, 1e3 * load_tolerance));
 
           if (it == 0)
             r_first = r;
@@ -223,20 +268,47 @@ namespace TissueContact
           if (gap_norm == 0. && r <= tolerance)
             {
               info.step_length = 0.;
+              if (r > load_tolerance)
+                {
+                  info.at_rounding = true;
+                  ++statistics.rounding_convergences;
+                }
               if (on_iteration)
                 on_iteration(info);
               return;
             }
+          if (it > 0)
+            viscous_stall = (parameters.quasi_viscosity && last_step == 1. &&
+                             r > 0.99 * r_previous) ?
+                              viscous_stall + 1 :
+                              0;
           if (it == parameters.max_iterations)
             {
               std::ostringstream s;
               s << "Newton did not converge in " << it
                 << " iterations (|R| = " << r << ", tolerance " << tolerance
                 << ")";
+              if (floor > 1e3 * load_tolerance && r < 10. * floor)
+                s << ": |R| is at the rounding floor of the internal forces ("
+                  << floor
+                  << "), more than 1e3 times the tolerance the load sets: "
+                     "the stiffest body is too stiff for this load (its "
+                     "forces are computed to eps times its modulus); "
+                     "raise Newton/Absolute tolerance to "
+                  << 10. * floor << " or soften the body";
+              else if (viscous_stall >= 5)
+                s << ": the quasi-viscosity limits every step (the last "
+                  << viscous_stall
+                  << " full steps reduced |R| by less than 1 %; its "
+                     "diagonal scales with the shear modulus, so a stiff "
+                     "body resting on a soft one barely moves); set "
+                     "Newton/Quasi-viscosity = false or a smaller Viscosity "
+                     "factor";
               throw SolveFailed(s.str());
             }
 
           // LOOP 2: (K + D/dt) du = -R, du = gap on prescribed DoFs
+          const unsigned int tangent_shifts_before = statistics.tangent_shifts;
           {
             const auto scope = time_section(timer, "linear solve");
             // quasi-viscosity D/dt_k with dt_k = dt r_0 / r_k: full strength
@@ -381,6 +453,7 @@ namespace TissueContact
               throw SolveFailed(msg.str());
             }
           u.swap(u_trial);
+          last_step        = s;
           info.update_norm = s * du.l2_norm();
           info.step_length = s;
           ++statistics.newton_iterations;

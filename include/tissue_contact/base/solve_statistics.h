@@ -13,6 +13,10 @@ namespace TissueContact
     double       update_norm       = 0.; // |s du|
     double       step_length       = 1.; // line-search factor s
     unsigned int linear_iterations = 0;
+    /** Converged because the Newton correction can no longer change the
+     * displacement in floating point, with |R| at its rounding floor above
+     * the tolerance (doc/theory/04-solver.md sec. 4.2.1). */
+    bool at_rounding = false;
   };
 
   /** Summary of a whole solve: converged load increments, cut-backs, the
@@ -26,6 +30,8 @@ namespace TissueContact
     unsigned int newton_iterations = 0;
     unsigned int linear_iterations = 0;
     unsigned int tangent_shifts    = 0;
+    /** Increments that converged to rounding (IterationInfo::at_rounding). */
+    unsigned int rounding_convergences = 0;
     /** Augmented-Lagrangian updates, each followed by another solve. */
     unsigned int multiplier_updates = 0;
   };

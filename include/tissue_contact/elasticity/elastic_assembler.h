@@ -156,6 +156,14 @@ namespace TissueContact
         return f_ext;
       }
 
+      /** The mean of @f$|\Omega_e|^{1/3}@f$ over the deformable cells
+       * (0 if there are none). */
+      double
+      mean_element_size() const
+      {
+        return element_size;
+      }
+
       /** Smallest @f$\det F@f$ over quadrature points of deformable cells. */
       double
       min_jacobian(const Vector<double> &u) const;
@@ -188,6 +196,7 @@ namespace TissueContact
        * FEValues in every assembly (the hot loop touches only these arrays).
        */
       unsigned int                         n_q, n_nodes, n_local;
+      double                               element_size = 0.;
       std::vector<Tensor<1, 3>>            grad_N;    // [cell][q][node]
       std::vector<double>                  JxW;       // [cell][q]
       std::vector<Point<3>>                X_q;       // [cell][q]

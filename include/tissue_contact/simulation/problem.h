@@ -166,6 +166,13 @@ namespace TissueContact
     external_force_norm(const double load_factor) const override;
     Vector<double>
     quasi_viscosity_diagonal(const double eta) const override;
+    /** The mean size of the deformable elements
+     * (ElasticAssembler::mean_element_size()). */
+    double
+    length_scale() const override
+    {
+      return assembler.mean_element_size();
+    }
     /** The six rigid-body modes (Discretization::rigid_body_modes()),
      * zero on the free rigid bodies' slaves and, on their unknowns, the
      * same motion: the centre's translation and the rotation vector.

@@ -69,6 +69,15 @@ namespace TissueContact
       virtual Vector<double>
       quasi_viscosity_diagonal(const double eta) const = 0;
 
+      /** A typical element size (length units), for the rounding floor
+       * of the residual (doc/theory/04-solver.md sec. 4.2.1); 0 (the
+       * default): none. */
+      virtual double
+      length_scale() const
+      {
+        return 0.;
+      }
+
       /** The potential energy whose gradient assemble() computes, for the
        * energy line search; NaN (the default) if the problem has none. */
       virtual double
@@ -169,6 +178,11 @@ namespace TissueContact
       quasi_viscosity_diagonal(const double eta) const override
       {
         return inner.quasi_viscosity_diagonal(eta);
+      }
+      double
+      length_scale() const override
+      {
+        return inner.length_scale();
       }
       double
       energy(const Vector<double> &u, const double load_factor) const override
