@@ -1,5 +1,6 @@
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/base/interrupt.h>
+#include <tissue_contact/base/memory_usage.h>
 #include <tissue_contact/dynamics/ida_integrator.h>
 #include <tissue_contact/dynamics/mass_matrix.h>
 #include <tissue_contact/simulation/dynamic_simulation.h>
@@ -278,6 +279,13 @@ namespace TissueContact
         << "  statistics: " << results.statistics_file() << "\n";
     if (p.output.write_vtu)
       out << "  results: " << results.pvd_file() << " (open in ParaView)\n";
+    if (p.output.print_timing)
+      {
+        // where the resident memory goes (base/memory_usage.h)
+        const std::string memory = memory_summary();
+        if (!memory.empty())
+          out << "  " << memory << "\n";
+      }
   }
 } // namespace TissueContact
 
@@ -350,5 +358,12 @@ namespace TissueContact
         << "  statistics: " << results.statistics_file() << "\n";
     if (p.output.write_vtu)
       out << "  results: " << results.pvd_file() << " (open in ParaView)\n";
+    if (p.output.print_timing)
+      {
+        // where the resident memory goes (base/memory_usage.h)
+        const std::string memory = memory_summary();
+        if (!memory.empty())
+          out << "  " << memory << "\n";
+      }
   }
 } // namespace TissueContact

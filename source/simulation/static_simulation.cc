@@ -1,5 +1,6 @@
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/base/interrupt.h>
+#include <tissue_contact/base/memory_usage.h>
 #include <tissue_contact/output/convergence_log.h>
 #include <tissue_contact/simulation/result_writer.h>
 #include <tissue_contact/simulation/static_simulation.h>
@@ -56,14 +57,20 @@ namespace TissueContact
       out << "  body '" << b.name << "' (material id " << int(b.id)
           << "): " << b.material.model << (b.material.fiber ? " + fibers" : "")
           << "\n";
-    const auto linear =
-      p.solver.linear_solver.resolved(nonlinear_problem.n_dofs());
+    const double widening = nonlinear_problem.pattern_widening();
+    const auto   linear =
+      p.solver.linear_solver.resolved(nonlinear_problem.n_dofs(), widening);
+    std::ostringstream limit;
+    if (widening > 1.05)
+      limit << nonlinear_problem.n_dofs() << " unknowns weighted by "
+            << std::setprecision(2) << widening
+            << "^2, the tangent's entries over the element couplings': ";
+    limit << (linear.type == "direct" ? "below " : "at least ")
+          << linear.automatic_limit << " unknowns";
     out << "  linear solver: " << linear.type
         << (linear.type == "direct" ? " (" + linear.direct_solver + ")" : "")
         << (p.solver.linear_solver.type == "automatic" ?
-              ", chosen by Type = automatic (" +
-                std::string(linear.type == "direct" ? "below " : "at least ") +
-                std::to_string(linear.automatic_limit) + " unknowns)" :
+              ", chosen by Type = automatic (" + limit.str() + ")" :
               std::string())
         << "\n";
     if (linear.type == "direct" && nonlinear_problem.n_dofs() > 20000)
@@ -275,6 +282,13 @@ namespace TissueContact
     out << "  statistics: " << results.statistics_file() << "\n";
     if (p.output.write_vtu)
       out << "  results: " << results.pvd_file() << " (open in ParaView)\n";
+    if (p.output.print_timing)
+      {
+        // where the resident memory goes (base/memory_usage.h)
+        const std::string memory = memory_summary();
+        if (!memory.empty())
+          out << "  " << memory << "\n";
+      }
     times          = timer.get_summary_data(TimerOutput::total_wall_time);
     times["total"] = total.wall_time();
     return statistics;

@@ -114,12 +114,13 @@ namespace TissueContact
       SUNDIALS::KINSOL<Vector<double>> kinsol(data);
 
       SparseMatrix<double> J;
-      const auto           resolved = linear_solver.resolved(n);
-      const LinearSolver   linear(resolved,
+      const auto           resolved =
+        linear_solver.resolved(n, problem.pattern_widening());
+      const LinearSolver linear(resolved,
                                 resolved.uses_near_null_space() ?
-                                    problem.near_null_space() :
-                                    std::vector<Vector<double>>());
-      std::string          failure;
+                                  problem.near_null_space() :
+                                  std::vector<Vector<double>>());
+      std::string        failure;
 
       kinsol.reinit_vector = [n](Vector<double> &v) { v.reinit(n); };
       kinsol.residual      = [&](const Vector<double> &x, Vector<double> &F) {

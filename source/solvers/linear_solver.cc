@@ -24,7 +24,10 @@ namespace TissueContact
         type,
         "Linear solver of each Newton step: automatic (direct below 10 000 "
         "unknowns, GMRES+AMG from there: the crossover measured in "
-        "doc/users/choosing.md lies between 7 000 and 16 000 unknowns), "
+        "doc/users/choosing.md lies between 7 000 and 16 000 unknowns for P1 "
+        "and P2; a tangent with w times the entries of the element "
+        "couplings, from the vertex volume term or contact pairs, counts its "
+        "unknowns w^2 times), "
         "GMRES+Jacobi (inexact GMRES with diagonal preconditioning, "
         "dissertation 4.7.3), direct (sparse LU, UMFPACK or MUMPS) or "
         "GMRES+AMG (Trilinos ML algebraic multigrid; the entries below set "

@@ -178,7 +178,8 @@ namespace TissueContact
       // for all increments of a run
       if (!linear_solver)
         {
-          const auto linear = parameters.linear_solver.resolved(n);
+          const auto linear =
+            parameters.linear_solver.resolved(n, problem.pattern_widening());
           linear_solver =
             std::make_unique<LinearSolver>(linear,
                                            linear.uses_near_null_space() ?

@@ -173,6 +173,15 @@ namespace TissueContact
     {
       return assembler.mean_element_size();
     }
+    /** The tangent's entries (the vertex volume term's couplings, the
+     * contact pairs' of the current state, the free rigid bodies') over the
+     * discretization's. */
+    double
+    pattern_widening() const override
+    {
+      return double(sparsity_pattern().n_nonzero_elements()) /
+             disc.sparsity_pattern.n_nonzero_elements();
+    }
     /** The six rigid-body modes (Discretization::rigid_body_modes()),
      * zero on the free rigid bodies' slaves and, on their unknowns, the
      * same motion: the centre's translation and the rotation vector.

@@ -64,13 +64,27 @@ namespace TissueContact
          * 0.1, a new three-mode hierarchy per solve) the falling rods
          * (25 704 unknowns, 30 steps) took 47 s against the direct
          * solver's 27 s; with these, 21 s. */
+        /**
+         * ... and for a tangent with @p widening times the entries of the
+         * element couplings alone (wider couplings: the vertex volume
+         * term's, contact pairs'), the limit divided by @p widening squared:
+         * a factorization's fill grows with the couplings' reach, where
+         * more entries per row from a higher degree do not move the
+         * crossover. Measured (doc/users/choosing.md): P1 and P2 cross over
+         * at about 7 800 and 8 800 unknowns with 34 and 68 entries per row;
+         * P1 with the vertex term, 2.5 times the element couplings'
+         * entries, between 1 200 and 2 475 (10 000 / 2.5^2 = 1 600).
+         */
         Parameters
-        resolved(const types::global_dof_index n_dofs) const
+        resolved(const types::global_dof_index n_dofs,
+                 const double                  widening = 1.) const
         {
           Parameters p = *this;
           if (p.type == "automatic")
             {
-              p.type = n_dofs < automatic_limit ? "direct" : "GMRES+AMG";
+              const double w = std::max(widening, 1.);
+              p.type =
+                n_dofs * w * w < automatic_limit ? "direct" : "GMRES+AMG";
               if (p.type == "GMRES+AMG")
                 {
                   p.forcing_term         = "Eisenstat-Walker";

@@ -69,6 +69,17 @@ namespace TissueContact
       virtual Vector<double>
       quasi_viscosity_diagonal(const double eta) const = 0;
 
+      /** The entries of sparsity_pattern() over those the element
+       * couplings alone would have (>= 1; wider couplings raise it), for
+       * the automatic choice of the linear solver
+       * (LinearSolver::Parameters::resolved()); 1 (the default): no wider
+       * couplings. */
+      virtual double
+      pattern_widening() const
+      {
+        return 1.;
+      }
+
       /** A typical element size (length units), for the rounding floor
        * of the residual (doc/theory/04-solver.md sec. 4.2.1); 0 (the
        * default): none. */
@@ -183,6 +194,11 @@ namespace TissueContact
       length_scale() const override
       {
         return inner.length_scale();
+      }
+      double
+      pattern_widening() const override
+      {
+        return inner.pattern_widening();
       }
       double
       energy(const Vector<double> &u, const double load_factor) const override
