@@ -644,14 +644,32 @@ namespace TissueContact
           }
       };
 
-      WorkStream::run(deformable_cells.begin(),
-                      deformable_cells.end(),
-                      worker,
-                      copier,
-                      ScratchData(),
-                      CopyData(),
-                      2 * MultithreadInfo::n_threads(),
-                      64);
+      // the cells in batches: one WorkStream item (and one copier call)
+      // per batch instead of per cell
+      constexpr unsigned int    batch = 16;
+      std::vector<unsigned int> batch_starts;
+      for (unsigned int k = 0; k < deformable_cells.size(); k += batch)
+        batch_starts.push_back(k);
+      WorkStream::run(
+        batch_starts.begin(),
+        batch_starts.end(),
+        [&](const std::vector<unsigned int>::const_iterator &start,
+            ScratchData                                     &s,
+            std::vector<CopyData>                           &copies) {
+          const unsigned int n =
+            std::min<unsigned int>(batch, deformable_cells.size() - *start);
+          copies.resize(n);
+          for (unsigned int k = 0; k < n; ++k)
+            worker(deformable_cells.cbegin() + *start + k, s, copies[k]);
+        },
+        [&](const std::vector<CopyData> &copies) {
+          for (const CopyData &copy : copies)
+            copier(copy);
+        },
+        ScratchData(),
+        std::vector<CopyData>(),
+        2 * MultithreadInfo::n_threads(),
+        4);
       if (valid && K != nullptr && nodal)
         nodal->add_tangent(vertex_state, dv, *K);
       if (valid)
