@@ -13,14 +13,6 @@ namespace TissueContact
 {
   namespace Solvers
   {
-    namespace
-    {
-      /** The tolerance is at least this multiple of the residual's
-       * rounding floor (doc/theory/04-solver.md sec. 4.2.1). */
-      constexpr double rounding_factor = 1.;
-    } // namespace
-
-
     void
     IncrementalNewtonSolver::Parameters::declare_parameters(
       ParameterHandler &prm)
@@ -254,8 +246,7 @@ namespace TissueContact
               floor = std::sqrt(floor);
             }
           const double tolerance =
-            std::max(load_tolerance,
-                     std::min(rounding_factor * floor, 1e3 * load_tolerance));
+            std::max(load_tolerance, std::min(floor, 1e3 * load_tolerance));
 
           if (it == 0)
             r_first = r;
@@ -309,7 +300,6 @@ namespace TissueContact
             }
 
           // LOOP 2: (K + D/dt) du = -R, du = gap on prescribed DoFs
-          const unsigned int tangent_shifts_before = statistics.tangent_shifts;
           {
             const auto scope = time_section(timer, "linear solve");
             // quasi-viscosity D/dt_k with dt_k = dt r_0 / r_k: full strength
