@@ -6,12 +6,14 @@
 namespace TissueContact
 {
   Discretization::Discretization(const Triangulation<3> &triangulation,
-                                 const unsigned int      degree)
+                                 const unsigned int      degree,
+                                 const bool              reduced_quadrature)
     : degree(degree)
     , fe(FE_SimplexP<3>(degree), 3)
     , mapping(FE_SimplexP<3>(1))
     , quadrature(degree + 1)
-    , stiffness_quadrature(degree == 1 ? 1 : degree + 1)
+    , stiffness_quadrature(
+        degree == 1 ? 1 : (reduced_quadrature ? degree : degree + 1))
     , face_quadrature(degree + 1)
     , dof_handler(triangulation)
   {

@@ -380,6 +380,18 @@ namespace TissueContact
                         "1: linear tetrahedra (fast); 2: quadratic "
                         "tetrahedra (accurate, no locking in bending).",
                         Patterns::Integer(1, 2));
+      prm.add_parameter(
+        "Stiffness quadrature",
+        stiffness_quadrature,
+        "The quadrature rule of the strain energy, its residual and tangent "
+        "on P2 elements (P1 elements use one point, exact). full: 14 points, "
+        "exact to degree 5. reduced: 6 points, exact to degree 3: still exact "
+        "for linear elasticity, the single-rotation element's stiffness, the "
+        "mean dilatation's element volume and the body force, an "
+        "approximation for the hyperelastic energies (as the four points of "
+        "quadratic tetrahedra in most codes), at less than half the assembly "
+        "cost; doc/users/choosing.md measures both.",
+        Patterns::Selection("full|reduced"));
       prm.leave_subsection();
 
       prm.enter_subsection("Bodies");

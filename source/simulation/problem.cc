@@ -16,7 +16,9 @@ namespace TissueContact
 {
   Problem::Problem(const Scene::SceneParameters &parameters)
     : scene(parameters)
-    , disc(scene.triangulation, parameters.degree)
+    , disc(scene.triangulation,
+           parameters.degree,
+           parameters.stiffness_quadrature == "reduced")
     , assembler(disc, scene.body_data(), scene.dead_loads())
     , prescribed(scene.prescribed_dofs(disc))
   {

@@ -7,7 +7,8 @@
 // = FD of the residual, symmetric; zero energy and residual under a rigid
 // motion; energy unchanged and residual rotated under a superposed
 // rotation; linear elasticity's residual to first order at small strain;
-// on P1 the corotated material exactly.
+// on P1 the corotated material exactly; the 6-point P2 rule integrates its
+// stiffness exactly.
 
 #include "../tests.h"
 
@@ -181,6 +182,19 @@ main(int argc, char **argv)
     deallog << "superposed rotation: energy difference "
             << error_bound(std::abs(W1 - W0) / W0) << ", residual "
             << error_bound(QR0.l2_norm() / R0.l2_norm()) << std::endl;
+  }
+
+  // the reduced P2 quadrature (6 points, degree 3) integrates K_e exactly
+  {
+    const Discretization         reduced(tria, 2, true);
+    Elasticity::ElasticAssembler sr_reduced(reduced,
+                                            single,
+                                            Elasticity::DeadLoads());
+    const double                 W = sr.energy(u_rotated, 0.),
+                 W_reduced         = sr_reduced.energy(u_rotated, 0.);
+    deallog << "6-point quadrature: " << reduced.stiffness_quadrature.size()
+            << " points, energy difference to 14 points "
+            << error_bound(std::abs(W_reduced - W) / W) << std::endl;
   }
 
   // small strain: linear elasticity's residual to first order

@@ -134,13 +134,15 @@ namespace TissueContact
        * start of a run. */
       std::string effective_parameters;
 
-      MeshParameters                               mesh;
-      unsigned int                                 degree = 1;
-      std::vector<BodyParameters>                  bodies;
-      std::vector<DirichletParameters>             dirichlet;
-      std::vector<TractionParameters>              tractions;
-      Tensor<1, 3>                                 gravity;
-      Contact::Parameters                          contact;
+      MeshParameters mesh;
+      unsigned int   degree = 1;
+      /** P2's stiffness quadrature: "full" (14 points) or "reduced" (6). */
+      std::string                      stiffness_quadrature = "full";
+      std::vector<BodyParameters>      bodies;
+      std::vector<DirichletParameters> dirichlet;
+      std::vector<TractionParameters>  tractions;
+      Tensor<1, 3>                     gravity;
+      Contact::Parameters              contact;
       Solvers::IncrementalNewtonSolver::Parameters solver;
       Dynamics::TimeIntegrator::Parameters         time_integration;
       OutputParameters                             output;
