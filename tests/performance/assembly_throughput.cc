@@ -116,58 +116,44 @@ main(int argc, char **argv)
           GridGenerator::subdivided_hyper_rectangle_with_simplices(
             tria, {n, n, n}, Point<3>(0, 0, 0), Point<3>(1, 1, 1));
           const Discretization disc(tria, degree);
-          const Vector<double> u = some_displacement(disc);
+          // one row: the throughput of @p body on @p d, 1 and n threads
+          const auto row = [&](const Discretization       &d,
+                               const Elasticity::BodyData &body,
+                               const std::string          &name) {
+            Elasticity::ElasticAssembler assembler(d,
+                                                   {{0, body}},
+                                                   Elasticity::DeadLoads());
+            const Vector<double>         u = some_displacement(d);
+            MultithreadInfo::set_thread_limit(1);
+            const double t1 = time_assembly(assembler, d, u);
+            MultithreadInfo::set_thread_limit(n_threads);
+            const double tn = time_assembly(assembler, d, u);
+            std::cout << std::setw(4) << degree << std::setw(10)
+                      << tria.n_active_cells() << std::setw(10) << d.n_dofs()
+                      << std::setw(26) << name << std::fixed
+                      << std::setprecision(3) << std::setw(12)
+                      << tria.n_active_cells() / t1 / 1e6 << std::setw(12)
+                      << tria.n_active_cells() / tn / 1e6 << std::defaultfloat
+                      << "\n";
+          };
           // every material, and the corotated one again with one rotation
           // per element (Rotation = element, doc/theory/10)
-          std::vector<std::pair<const Materials::Material *, bool>> cases;
           for (const auto &m : materials)
             {
-              cases.emplace_back(m.get(), false);
+              row(disc, {m.get(), 1.}, m->name());
               if (m->name() == "corotated")
-                cases.emplace_back(m.get(), true);
-            }
-          for (const auto &[m, single_rotation] : cases)
-            {
-              Elasticity::BodyData body{m, 1.};
-              body.single_rotation = single_rotation;
-              Elasticity::ElasticAssembler assembler(disc,
-                                                     {{0, body}},
-                                                     Elasticity::DeadLoads());
-              MultithreadInfo::set_thread_limit(1);
-              const double t1 = time_assembly(assembler, disc, u);
-              MultithreadInfo::set_thread_limit(n_threads);
-              const double tn = time_assembly(assembler, disc, u);
-              std::cout << std::setw(4) << degree << std::setw(10)
-                        << tria.n_active_cells() << std::setw(10)
-                        << disc.n_dofs() << std::setw(26)
-                        << (single_rotation ? "corotated, 1 rotation" :
-                                              m->name())
-                        << std::fixed << std::setprecision(3) << std::setw(12)
-                        << tria.n_active_cells() / t1 / 1e6 << std::setw(12)
-                        << tria.n_active_cells() / tn / 1e6 << std::defaultfloat
-                        << "\n";
+                {
+                  Elasticity::BodyData body{m.get(), 1.};
+                  body.single_rotation = true;
+                  row(disc, body, "corotated, 1 rotation");
+                }
             }
           if (degree == 2)
             {
               // P2 with the reduced stiffness quadrature (6 points)
               const Discretization          reduced(tria, 2, true);
               const Materials::MooneyRivlin mr(5., 1., 50.);
-              Elasticity::ElasticAssembler  assembler(reduced,
-                                                     {{0, {&mr, 1.}}},
-                                                     Elasticity::DeadLoads());
-              const Vector<double>          ur = some_displacement(reduced);
-              MultithreadInfo::set_thread_limit(1);
-              const double t1 = time_assembly(assembler, reduced, ur);
-              MultithreadInfo::set_thread_limit(n_threads);
-              const double tn = time_assembly(assembler, reduced, ur);
-              std::cout << std::setw(4) << degree << std::setw(10)
-                        << tria.n_active_cells() << std::setw(10)
-                        << reduced.n_dofs() << std::setw(26)
-                        << "Mooney-Rivlin, 6 points" << std::fixed
-                        << std::setprecision(3) << std::setw(12)
-                        << tria.n_active_cells() / t1 / 1e6 << std::setw(12)
-                        << tria.n_active_cells() / tn / 1e6 << std::defaultfloat
-                        << "\n";
+              row(reduced, {&mr, 1.}, "Mooney-Rivlin, 6 points");
             }
         }
     }
