@@ -1,3 +1,4 @@
+#include <tissue_contact/base/cross_matrix.h>
 #include <tissue_contact/base/polar_rotation.h>
 
 #include <cmath>
@@ -26,20 +27,6 @@ namespace TissueContact
   }
 
 
-  Tensor<2, 3>
-  PolarRotation::hat(const Tensor<1, 3> &w)
-  {
-    Tensor<2, 3> W;
-    W[0][1] = -w[2];
-    W[0][2] = w[1];
-    W[1][0] = w[2];
-    W[1][2] = -w[0];
-    W[2][0] = -w[1];
-    W[2][1] = w[0];
-    return W;
-  }
-
-
   Tensor<1, 3>
   PolarRotation::axial(const Tensor<2, 3> &W)
   {
@@ -58,7 +45,7 @@ namespace TissueContact
   Tensor<2, 3>
   PolarRotation::dR(const Tensor<2, 3> &dF) const
   {
-    return rotation * hat(omega(dF));
+    return rotation * cross_matrix(omega(dF));
   }
 
 
@@ -68,7 +55,7 @@ namespace TissueContact
                         const Tensor<2, 3> &dF2,
                         const Tensor<1, 3> &omega2) const
   {
-    const Tensor<2, 3> W2 = hat(omega2);
+    const Tensor<2, 3> W2 = cross_matrix(omega2);
     // dU_2 = R^T dF_2 - W_2 U; d(axial(R^T dF_1 - dF_1^T R)) along dF_2
     const Tensor<2, 3> dU2 =
       transpose(rotation) * dF2 - W2 * static_cast<Tensor<2, 3>>(stretch);
@@ -76,7 +63,7 @@ namespace TissueContact
     const Tensor<1, 3> da = axial(transpose(A) - A);
     const Tensor<1, 3> domega1 =
       M_inverse * (da - (trace(dU2) * omega1 - dU2 * omega1));
-    return W2 * hat(omega1) + hat(domega1);
+    return W2 * cross_matrix(omega1) + cross_matrix(domega1);
   }
 
 

@@ -1,3 +1,4 @@
+#include <tissue_contact/base/cross_matrix.h>
 #include <tissue_contact/contact/penalty_kernel.h>
 
 #include <algorithm>
@@ -85,14 +86,6 @@ namespace TissueContact
                   H[j + q][i + p] += m[p][q];
                 }
           }
-      }
-
-      /** @f$[a]_\times@f$, the matrix of @f$v \mapsto a \times v@f$ */
-      Tensor<2, 3>
-      cross_matrix(const Tensor<1, 3> &a)
-      {
-        return Tensor<2, 3>(
-          {{0., -a[2], a[1]}, {a[2], 0., -a[0]}, {-a[1], a[0], 0.}});
       }
 
       /** H += c (a b^T + b a^T) */

@@ -1,3 +1,4 @@
+#include <tissue_contact/base/cross_matrix.h>
 #include <tissue_contact/base/polar_rotation.h>
 #include <tissue_contact/elasticity/single_rotation.h>
 
@@ -168,7 +169,7 @@ namespace TissueContact
               omega[3 * a + i] += grad_lambda[a][j] * Omega[i][j];
           }
 
-      // (SR4): r_J = R f_J + [J corner] dR/dx_J : G, dR : G = hat(omega) :
+      // (SR4): r_J = R f_J + [J corner] dR/dx_J : G, dR : G = [omega]_x :
       // R^T G
       for (unsigned int J = 0; J < n_nodes; ++J)
         {
@@ -177,7 +178,7 @@ namespace TissueContact
             r[3 * J + k] = Rf[k];
         }
       for (unsigned int c = 0; c < 12; ++c)
-        r[c] += scalar_product(PolarRotation::hat(omega[c]), RtG);
+        r[c] += scalar_product(cross_matrix(omega[c]), RtG);
       if (H == nullptr)
         return true;
 

@@ -184,10 +184,16 @@ namespace TissueContact
       // full steps in a row that reduced |R| by less than 1 % with the
       // quasi-viscosity on: the viscosity, not the tangent, sets the step
       unsigned int viscous_stall = 0;
-      // the rounding floor's perturbation and its image
+      // the rounding floor's perturbation of the free unknowns at rounding
+      // level, delta_j = +-eps h (the same in every iteration), and its image
       const double   length_scale = problem.length_scale();
       Vector<double> delta(length_scale > 0. ? n : 0),
         K_delta(length_scale > 0. ? n : 0);
+      for (types::global_dof_index i = 0; i < delta.size(); ++i)
+        delta[i] = prescribed[i] ?
+                     0. :
+                     std::numeric_limits<double>::epsilon() * length_scale *
+                       (((i * 2654435761u) >> 7) & 1u ? 1. : -1.);
       double last_step = 0.;
       // the energy at u when the line search computed it at the accepted
       // step (the start of the next line search), NaN otherwise
@@ -233,12 +239,6 @@ namespace TissueContact
           double floor = 0.;
           if (length_scale > 0.)
             {
-              for (types::global_dof_index i = 0; i < n; ++i)
-                delta[i] = prescribed[i] ?
-                             0. :
-                             std::numeric_limits<double>::epsilon() *
-                               length_scale *
-                               (((i * 2654435761u) >> 7) & 1u ? 1. : -1.);
               K.vmult(K_delta, delta);
               for (types::global_dof_index i = 0; i < n; ++i)
                 if (!prescribed[i])

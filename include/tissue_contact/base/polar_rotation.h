@@ -59,11 +59,8 @@ namespace TissueContact
     Tensor<2, 3>
     d2R(const Tensor<2, 3> &dF1, const Tensor<2, 3> &dF2) const;
 
-    /** The skew matrix @f$\hat w@f$ with @f$\hat w v = w\times v@f$. */
-    static Tensor<2, 3>
-    hat(const Tensor<1, 3> &w);
-
-    /** The axial vector of a skew matrix @p W: @f$\hat w = W@f$. */
+    /** The axial vector of a skew matrix @p W: @f$\hat w = W@f$
+     * (@f$\hat w@f$ = cross_matrix(w), base/cross_matrix.h). */
     static Tensor<1, 3>
     axial(const Tensor<2, 3> &W);
 
