@@ -1,10 +1,13 @@
+#include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/output/vtu_file.h>
+#include <tissue_contact/scene/parameters.h>
 #include <tissue_contact/simulation/checkpoint.h>
 
 #include <deal.II/base/exceptions.h>
 
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace TissueContact
@@ -108,59 +111,85 @@ namespace TissueContact
   check_same_parameters(const Checkpoint  &checkpoint,
                         const std::string &parameters)
   {
-    // the lines of the effective parameters that matter: not the comment
-    // naming the file, not the output folder, not the solver's entries
-    // (subsections Newton and Linear solver and theirs)
-    const auto lines = [](const std::string &text) {
-      std::vector<std::string> kept;
-      std::istringstream       in(text);
-      unsigned int             depth = 0, solver_depth = 0; // 0: outside
+    // the entries that matter, as "Section/Subsection/Entry" -> value: not
+    // the output folder, not the solver's entries (subsections Newton and
+    // Linear solver and theirs). Keyed, so that the column alignment of the
+    // printed file does not count
+    const auto entries = [](const std::string &text) {
+      std::map<std::string, std::string> kept;
+      std::vector<std::string>           path;
+      unsigned int                       solver_depth = 0; // 0: outside
+      const auto                         trim = [](const std::string &s) {
+        const auto first = s.find_first_not_of(' ');
+        const auto last  = s.find_last_not_of(' ');
+        return first == std::string::npos ? std::string() :
+                                                                    s.substr(first, last - first + 1);
+      };
+      std::istringstream in(text);
       for (std::string line; std::getline(in, line);)
         {
-          const auto        first = line.find_first_not_of(' ');
-          const std::string word =
-            first == std::string::npos ? "" : line.substr(first);
+          const std::string word = trim(line);
           if (word.rfind("subsection ", 0) == 0)
             {
-              ++depth;
-              if (solver_depth == 0 && depth == 1 &&
-                  (word == "subsection Newton" ||
-                   word == "subsection Linear solver"))
-                solver_depth = depth;
-              if (solver_depth == 0)
-                kept.push_back(line);
+              path.push_back(trim(word.substr(11)));
+              if (solver_depth == 0 && path.size() == 1 &&
+                  (path[0] == "Newton" || path[0] == "Linear solver"))
+                solver_depth = 1;
               continue;
             }
           if (word == "end")
             {
-              if (solver_depth == 0)
-                kept.push_back(line);
-              if (depth == solver_depth)
+              if (path.size() == solver_depth)
                 solver_depth = 0;
-              if (depth > 0)
-                --depth;
+              if (!path.empty())
+                path.pop_back();
               continue;
             }
-          if (solver_depth == 0 && word.rfind("#", 0) != 0 &&
-              word.rfind("set Directory", 0) != 0)
-            kept.push_back(line);
+          const auto equals = word.find('=');
+          if (solver_depth != 0 || word.rfind("set ", 0) != 0 ||
+              equals == std::string::npos)
+            continue;
+          std::string key;
+          for (const auto &section : path)
+            key += section + "/";
+          key += trim(word.substr(4, equals - 4));
+          if (key != "Output/Directory")
+            kept[key] = trim(word.substr(equals + 1));
         }
       return kept;
     };
-    const auto a = lines(checkpoint.parameters), b = lines(parameters);
-    for (std::size_t i = 0; i < std::max(a.size(), b.size()); ++i)
+    // the checkpoint's parameters read by this version of the program, so
+    // that an entry added since takes its default, as the current file does
+    std::string then;
+    try
       {
-        const std::string x    = i < a.size() ? a[i] : "(none)";
-        const std::string y    = i < b.size() ? b[i] : "(none)";
-        const auto        trim = [](const std::string &s) {
-          const auto first = s.find_first_not_of(' ');
-          return first == std::string::npos ? s : s.substr(first);
-        };
-        AssertThrow(x == y,
+        then = Scene::SceneParameters::from_string(checkpoint.parameters)
+                 .effective_parameters;
+      }
+    catch (const std::exception &e)
+      {
+        AssertThrow(false,
+                    ExcMessage(std::string("the checkpoint's parameters "
+                                           "cannot be read by this version "
+                                           "of the program: ") +
+                               error_message(e)));
+      }
+    const auto a = entries(then), b = entries(parameters);
+    std::map<std::string, std::string> keys;
+    for (const auto *m : {&a, &b})
+      for (const auto &[key, value] : *m)
+        keys[key];
+    for (const auto &entry : keys)
+      {
+        const auto       &key = entry.first;
+        const auto        x = a.find(key), y = b.find(key);
+        const std::string was = x == a.end() ? "(none)" : x->second;
+        const std::string now = y == b.end() ? "(none)" : y->second;
+        AssertThrow(was == now,
                     ExcMessage("the parameter file differs from the one of "
-                               "the run that wrote the checkpoint: '" +
-                               trim(y) + "' instead of '" + trim(x) +
-                               "'; restart with the same parameters (only "
+                               "the run that wrote the checkpoint: " +
+                               key + " = " + now + " instead of " + was +
+                               "; restart with the same parameters (only "
                                "the entries of Newton and Linear solver may "
                                "change)"));
       }
