@@ -23,7 +23,7 @@ from pv_series import WarningCounter, nearest_step, open_series
 
 def body(warp, material_id):
     """The cells of one body (material id) of the warped series."""
-    part = Threshold(Input=warp, Scalars=["POINTS", "material_id"])
+    part = Threshold(Input=warp, Scalars=["CELLS", "material_id"])
     part.LowerThreshold = material_id
     part.UpperThreshold = material_id
     return part

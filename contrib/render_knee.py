@@ -59,7 +59,7 @@ def side_camera(view):
 
 
 def colour_by_body(display):
-    ColorBy(display, ("POINTS", "material_id"))
+    ColorBy(display, ("CELLS", "material_id"))
     lut = GetColorTransferFunction("material_id")
     lut.InterpretValuesAsCategories = 1
     lut.Annotations = sum(
@@ -102,7 +102,7 @@ def main():
 
     # the skin-fat layer at the last step, coloured by material depth
     Hide(warp, view)
-    skin = Threshold(Input=warp, Scalars=["POINTS", "material_id"])
+    skin = Threshold(Input=warp, Scalars=["CELLS", "material_id"])
     skin.LowerThreshold = 7
     skin.UpperThreshold = 7
     skin_display = Show(skin, view)

@@ -113,6 +113,19 @@ Macro SlidingParts
   Dilate {{0, 0, 0}, {a_pat + d, b_pat + d, c_pat + d}} { Volume{v5}; }
   Translate {0, y_pat, z_pat} { Volume{v5}; }
   p() = {v5};
+  If (d > 0)
+    // the cavity also spans the space between the patella and the femur
+    // (an elliptic cylinder along y under the patella's outline, from the
+    // femur's axis to the patella's centre): otherwise the skin-fat fills
+    // it with slivers a fraction of a millimetre thick where the two
+    // enlarged surfaces nearly meet, which the patella, pulled onto the
+    // femur, crushes (the full-scale knee's Newton iterations drifted
+    // there, along a direction of negative curvature, from 49 degrees on)
+    v9 = newv; Cylinder(v9) = {0, 0, 0, 0, 1, 0, 1};
+    Dilate {{0, 0, 0}, {a_pat + d, y_pat, c_pat + d}} { Volume{v9}; }
+    Translate {0, 0, z_pat} { Volume{v9}; }
+    p() += v9;
+  EndIf
   // patellar ligament: a cylinder from inside the tibial tuberosity up to
   // inside the patella's lower end, clear of the trochlea
   v6 = newv; Cylinder(v6) = {0, y_lig0, z_lig0, 0, y_lig1 - y_lig0, z_lig1 - z_lig0, r_lig + d};

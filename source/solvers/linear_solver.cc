@@ -181,6 +181,12 @@ namespace TissueContact
         parameters.max_iterations, 1e-300, relative_tolerance, false, false);
       SolverGMRES<Vector<double>>::AdditionalData data;
       data.max_n_tmp_vectors = 52;
+      // right preconditioning: GMRES then minimizes and stops on the true
+      // residual |K x - b|, the forcing condition of inexact Newton
+      // (doc/theory/04-solver.md sec. 4.5.1); left preconditioning stops on
+      // |P^-1 (K x - b)|, which on the full knee fell by 10 while the true
+      // residual did not fall at all
+      data.right_preconditioning = true;
       SolverGMRES<Vector<double>> gmres(control, data);
       x         = 0.;
       converged = true;
@@ -267,7 +273,8 @@ namespace TissueContact
           ReductionControl control(
             parameters.max_iterations, 1e-300, tolerance, false, false);
           SolverGMRES<Vector<double>>::AdditionalData data;
-          data.max_n_tmp_vectors = 52;
+          data.max_n_tmp_vectors     = 52;
+          data.right_preconditioning = true; // stop on |K x - b|, as above
           SolverGMRES<Vector<double>> gmres(control, data);
           try
             {

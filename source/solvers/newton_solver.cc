@@ -330,12 +330,32 @@ namespace TissueContact
             for (const auto &g : gap)
               if (std::abs(K.diag_element(g.first)) < 1e-12 * diagonal)
                 K.diag_element(g.first) = diagonal;
-            MatrixTools::apply_boundary_values(gap, K, du, rhs, true);
+            // du = lift + v: the lift carries the prescribed values, v (zero
+            // there) solves K v = -R - K lift on the free rows. An iterative
+            // solver's relative tolerance then measures the free rows only:
+            // with the values in the right-hand side (diagonal times gap),
+            // they would dominate its norm and GMRES stop once it met them
+            Vector<double> &lift = R_trial; // free here, the line search's
+            lift                 = 0.;
+            std::map<types::global_dof_index, double> zero;
+            for (const auto &g : gap)
+              {
+                lift[g.first] = g.second;
+                zero[g.first] = 0.;
+              }
+            if (gap_norm > 0.)
+              {
+                rhs *= -1.;
+                K.vmult_add(rhs, lift);
+                rhs *= -1.;
+              }
+            MatrixTools::apply_boundary_values(zero, K, du, rhs, true);
             const double eta =
               linear_solver->forcing(r, r_previous, eta_previous, tolerance);
             info.linear_iterations = linear_solver->solve(K, du, rhs, eta);
-            r_previous             = r;
-            eta_previous           = eta;
+            du += lift;
+            r_previous   = r;
+            eta_previous = eta;
             // an indefinite tangent (the penalty energy of contact is not
             // convex) can give a du along which the energy rises: shift the
             // free diagonal by sigma |K_ii|, sigma = 1e-4, 1e-3, ..., 1,
