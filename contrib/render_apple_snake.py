@@ -39,13 +39,13 @@ def main():
     times, warp, view = open_series(args.pvd, 900)
     snake_cells = body(warp, 1)
     snake = Show(snake_cells, view)
-    ColorBy(snake, ("POINTS", "von_mises"))
+    ColorBy(snake, ("CELLS", "von_mises"))
     half = Clip(Input=snake_cells)
     half.ClipType = "Plane"
     half.ClipType.Origin = [0.0, 0.0, 0.0]
     half.ClipType.Normal = [0.0, 0.0, 1.0]
     cut = Show(half, view)
-    ColorBy(cut, ("POINTS", "von_mises"))
+    ColorBy(cut, ("CELLS", "von_mises"))
     apple = Show(body(warp, 2), view)
     apple.ColorArrayName = ["POINTS", ""]
     apple.AmbientColor = apple.DiffuseColor = [0.8, 0.1, 0.1]

@@ -26,7 +26,7 @@ def main():
     counter = WarningCounter()
     times, warp, view = open_series(args.pvd, 800)
     display = Show(warp, view)
-    ColorBy(display, ("POINTS", "von_mises"))
+    ColorBy(display, ("CELLS", "von_mises"))
     for fraction in (0.25, 0.5, 0.75, 1.0):
         t = nearest_step(times, fraction * times[-1])
         view.ViewTime = t
