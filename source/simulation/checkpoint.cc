@@ -8,6 +8,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace TissueContact
@@ -97,6 +98,16 @@ namespace TissueContact
       const std::string &path;
       std::size_t        at = 0;
     };
+
+    // s without its leading and trailing blanks
+    std::string
+    trimmed(const std::string &s)
+    {
+      const auto first = s.find_first_not_of(' ');
+      const auto last  = s.find_last_not_of(' ');
+      return first == std::string::npos ? std::string() :
+                                          s.substr(first, last - first + 1);
+    }
   } // namespace
 
 
@@ -119,19 +130,13 @@ namespace TissueContact
       std::map<std::string, std::string> kept;
       std::vector<std::string>           path;
       unsigned int                       solver_depth = 0; // 0: outside
-      const auto                         trim = [](const std::string &s) {
-        const auto first = s.find_first_not_of(' ');
-        const auto last  = s.find_last_not_of(' ');
-        return first == std::string::npos ? std::string() :
-                                                                    s.substr(first, last - first + 1);
-      };
-      std::istringstream in(text);
+      std::istringstream                 in(text);
       for (std::string line; std::getline(in, line);)
         {
-          const std::string word = trim(line);
+          const std::string word = trimmed(line);
           if (word.rfind("subsection ", 0) == 0)
             {
-              path.push_back(trim(word.substr(11)));
+              path.push_back(trimmed(word.substr(11)));
               if (solver_depth == 0 && path.size() == 1 &&
                   (path[0] == "Newton" || path[0] == "Linear solver"))
                 solver_depth = 1;
@@ -152,9 +157,9 @@ namespace TissueContact
           std::string key;
           for (const auto &section : path)
             key += section + "/";
-          key += trim(word.substr(4, equals - 4));
+          key += trimmed(word.substr(4, equals - 4));
           if (key != "Output/Directory")
-            kept[key] = trim(word.substr(equals + 1));
+            kept[key] = trimmed(word.substr(equals + 1));
         }
       return kept;
     };
@@ -174,14 +179,13 @@ namespace TissueContact
                                            "of the program: ") +
                                error_message(e)));
       }
-    const auto a = entries(then), b = entries(parameters);
-    std::map<std::string, std::string> keys;
+    const auto            a = entries(then), b = entries(parameters);
+    std::set<std::string> keys;
     for (const auto *m : {&a, &b})
-      for (const auto &[key, value] : *m)
-        keys[key];
-    for (const auto &entry : keys)
+      for (const auto &entry : *m)
+        keys.insert(entry.first);
+    for (const auto &key : keys)
       {
-        const auto       &key = entry.first;
         const auto        x = a.find(key), y = b.find(key);
         const std::string was = x == a.end() ? "(none)" : x->second;
         const std::string now = y == b.end() ? "(none)" : y->second;
