@@ -248,7 +248,12 @@ namespace TissueContact
           const double tolerance =
             std::max(load_tolerance, std::min(floor, 1e3 * load_tolerance));
 
-          if (it == 0)
+          // the residual the quasi-viscosity fades against: the first one
+          // with the prescribed values in place (before that, as at the
+          // start of a displacement-driven increment, |R| is that of the
+          // last equilibrium, zero, and would keep the viscosity at full
+          // strength through the whole increment)
+          if (r_first == 0. && gap_norm == 0.)
             r_first = r;
 
           IterationInfo info;
@@ -305,10 +310,11 @@ namespace TissueContact
             // quasi-viscosity D/dt_k with dt_k = dt r_0 / r_k: full strength
             // at the start of the increment, fading as the residual falls
             // so that Newton keeps its quadratic rate near the solution
-            if (parameters.quasi_viscosity && r_first > 0.)
+            if (parameters.quasi_viscosity)
               {
                 const double c =
-                  std::min(1., r / r_first) / parameters.viscosity_time_step;
+                  (r_first > 0. ? std::min(1., r / r_first) : 1.) /
+                  parameters.viscosity_time_step;
                 for (types::global_dof_index i = 0; i < n; ++i)
                   K.diag_element(i) += c * viscosity[i];
               }
