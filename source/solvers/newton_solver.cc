@@ -156,8 +156,15 @@ namespace TissueContact
 
       const auto        targets = problem.prescribed_values(load_factor);
       std::vector<bool> prescribed(n, false);
+      // the prescribed DoFs with value zero: the step's constraint once the
+      // prescribed values are lifted out (LOOP 2), the same in every
+      // iteration
+      std::map<types::global_dof_index, double> zero;
       for (const auto &t : targets)
-        prescribed[t.first] = true;
+        {
+          prescribed[t.first] = true;
+          zero.emplace_hint(zero.end(), t.first, 0.);
+        }
 
       const auto norms = [&](const Vector<double> &R) {
         double free = 0., reaction = 0.;
@@ -343,12 +350,8 @@ namespace TissueContact
             // they would dominate its norm and GMRES stop once it met them
             Vector<double> &lift = R_trial; // free here, the line search's
             lift                 = 0.;
-            std::map<types::global_dof_index, double> zero;
             for (const auto &g : gap)
-              {
-                lift[g.first] = g.second;
-                zero[g.first] = 0.;
-              }
+              lift[g.first] = g.second;
             if (gap_norm > 0.)
               {
                 rhs *= -1.;
