@@ -38,10 +38,10 @@
 // n_2pi elements around a full circle of a curved surface (measured with
 // gmsh 4.8; both meshes pass tissue-contact's mesh checks):
 //   gmsh -3 -setnumber h 0.0125 -setnumber n_2pi 8 knee.geo
-//     40 350 tetrahedra, 9 893 nodes, 12 389 contact triangles: the
+//     40 295 tetrahedra, 9 900 nodes, 12 373 contact triangles: the
 //     sources' scale (prm/knee_flexion.prm);
 //   gmsh -3 -setnumber h 0.06 -setnumber n_2pi 5 -setnumber pat_refine 2
-//     4 281 tetrahedra, 1 414 nodes: the suite's coarse knee (the count
+//     4 739 tetrahedra, 1 559 nodes: the suite's coarse knee (the count
 //     hardly falls below: the skin-fat layer and the small parts need
 //     their few elements across).
 // The test scene/knee_mesh meshes it at h 0.04, n_2pi 5; scene/knee_flexion
@@ -135,7 +135,15 @@ Macro SlidingParts
   t() = {v7};
   // quadriceps muscle: in front of the femur shaft, from z_m to the cut
   v8 = newv; Box(v8) = {-0.040 - d, r_femur + 0.003 - d, z_m - d, 0.080 + 2 * d, t_mus + 2 * d, L_thigh - z_m + 2 * d};
-  m() = {v8};
+  // its lower front edge (where it meets the tendon) rounded with an 8 mm
+  // fillet: pressed into the skin-fat at about 80 degrees, a sharp 90-degree
+  // edge kinks the piecewise linear material depth across its two faces and
+  // the full-scale knee's Newton iterations cycled there
+  yf = r_femur + 0.003 + t_mus + d;
+  zb = z_m - d;
+  ce() = Curve In BoundingBox{-1, yf - 1e-6, zb - 1e-6, 1, yf + 1e-6, zb + 1e-6};
+  v8r() = Fillet{v8}{ce()}{0.008};
+  m() = {v8r(0)};
 Return
 
 z_plat = -r_cond - gap_ft; // top of the tibial plateau
