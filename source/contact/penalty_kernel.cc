@@ -55,13 +55,14 @@ namespace TissueContact
       }
 
       /**
-       * H += c Hess O. O is affine in each point, so the diagonal blocks
-       * vanish; block (a, b) is @f$[p_r - p_s]_\times@f$ for (a, b, r, s)
-       * an even permutation of (0, 1, 2, 3), and block (b, a) its
-       * transpose.
+       * Half of c Hess O, added to @p M (the Hessian is M + M^T at the
+       * end). O is affine in each point, so the diagonal blocks vanish;
+       * block (a, b) is @f$[p_r - p_s]_\times@f$ for (a, b, r, s) an even
+       * permutation of (0, 1, 2, 3), and block (b, a) its transpose: M gets
+       * block (a, b) once.
        */
       void
-      add_hessian(Mat &H, const Points &x, const Orientation &o, const double c)
+      add_hessian(Mat &M, const Points &x, const Orientation &o, const double c)
       {
         static constexpr unsigned int even[6][4] = {{0, 1, 2, 3},
                                                     {0, 2, 3, 1},
@@ -76,30 +77,93 @@ namespace TissueContact
             const unsigned int i = 3 * o.point[perm[0]],
                                j = 3 * o.point[perm[1]];
             // [w]_x = [[0, -w2, w1], [w2, 0, -w0], [-w1, w0, 0]]
-            const double m[3][3] = {{0., -w[2], w[1]},
-                                    {w[2], 0., -w[0]},
-                                    {-w[1], w[0], 0.}};
-            for (unsigned int p = 0; p < 3; ++p)
-              for (unsigned int q = 0; q < 3; ++q)
-                {
-                  H[i + p][j + q] += m[p][q];
-                  H[j + q][i + p] += m[p][q];
-                }
+            M[i][j + 1] -= w[2];
+            M[i][j + 2] += w[1];
+            M[i + 1][j] += w[2];
+            M[i + 1][j + 2] -= w[0];
+            M[i + 2][j] -= w[1];
+            M[i + 2][j + 1] += w[0];
           }
       }
 
-      /** H += c (a b^T + b a^T) */
+      /** Half of c (a b^T + b a^T): M += c a b^T */
       void
-      add_symmetric_outer(Mat &H, const Vec &a, const Vec &b, const double c)
+      add_symmetric_outer(Mat &M, const Vec &a, const Vec &b, const double c)
       {
         for (unsigned int i = 0; i < n; ++i)
           {
-            const double ai = c * a[i], bi = c * b[i];
-            if (ai == 0. && bi == 0.)
-              continue;
-            for (unsigned int j = 0; j < n; ++j)
-              H[i][j] += ai * b[j] + bi * a[j];
+            const double ai = c * a[i];
+            if (ai != 0.)
+              for (unsigned int j = 0; j < n; ++j)
+                M[i][j] += ai * b[j];
           }
+      }
+
+      /** H = H + M + M^T, M (the half convention of the functions above)
+       * reset to zero */
+      void
+      add_symmetrized(Mat &H, Mat &M)
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = i; j < n; ++j)
+            {
+              const double v = M[i][j] + M[j][i];
+              H[i][j] += v;
+              if (j != i)
+                H[j][i] += v;
+            }
+        for (auto &row : M)
+          row.fill(0.);
+      }
+
+      /** The nonzero entries of a 21-vector that is zero outside a few of
+       * the 7 points: their coordinate indices. */
+      struct Support
+      {
+        unsigned int                size = 0;
+        std::array<unsigned int, n> i;
+
+        /** the coordinates of the listed points */
+        Support() = default;
+
+        template <std::size_t N>
+        explicit Support(const std::array<unsigned int, N> &points,
+                         const unsigned int                 n_points = N)
+        {
+          std::array<bool, 7> on{};
+          for (unsigned int k = 0; k < n_points; ++k)
+            on[points[k]] = true;
+          for (unsigned int P = 0; P < 7; ++P)
+            if (on[P])
+              for (unsigned int d = 0; d < 3; ++d)
+                i[size++] = 3 * P + d;
+        }
+      };
+
+      /** Half of c (a b^T + b a^T), a and b zero outside @p sa, @p sb:
+       * M += c a b^T */
+      void
+      add_symmetric_outer(Mat           &M,
+                          const Vec     &a,
+                          const Support &sa,
+                          const Vec     &b,
+                          const Support &sb,
+                          const double   c)
+      {
+        for (unsigned int p = 0; p < sa.size; ++p)
+          {
+            const unsigned int i  = sa.i[p];
+            const double       ai = c * a[i];
+            for (unsigned int q = 0; q < sb.size; ++q)
+              M[i][sb.i[q]] += ai * b[sb.i[q]];
+          }
+      }
+
+      /** The points an orientation depends on. */
+      Support
+      support(const Orientation &o)
+      {
+        return Support(o.point);
       }
 
       /** The depth field at a triangle vertex t: @f$G_t = N_t / V@f$ with
@@ -110,6 +174,8 @@ namespace TissueContact
         std::array<Orientation, 4> D;
         double                     N, G;
         Vec                        grad_N, grad_G;
+        /** the points N_t and G_t depend on: the tetrahedron's and t's */
+        std::array<unsigned int, 5> points;
       };
 
       /** The depth field at triangle vertex @p t (point 4 + t). */
@@ -120,7 +186,8 @@ namespace TissueContact
                    const unsigned int           t)
       {
         VertexDepth vd;
-        vd.N = 0.;
+        vd.points = {{0, 1, 2, 3, 4 + t}};
+        vd.N      = 0.;
         vd.grad_N.fill(0.);
         for (unsigned int j = 0; j < 4; ++j)
           {
@@ -137,9 +204,10 @@ namespace TissueContact
         return vd;
       }
 
-      /** H += omega Hess G_t, G_t = N_t / V (quotient rule). */
+      /** Half of omega Hess G_t, G_t = N_t / V (quotient rule), added to
+       * @p M. */
       void
-      add_depth_hessian(Mat                         &H,
+      add_depth_hessian(Mat                         &M,
                         const Points                &x,
                         const Orientation           &V,
                         const VertexDepth           &vd,
@@ -148,12 +216,13 @@ namespace TissueContact
       {
         const double Vv = V.value;
         for (unsigned int j = 0; j < 4; ++j)
-          add_hessian(H, x, vd.D[j], omega * g[j] / Vv);
-        add_hessian(H, x, V, -omega * vd.N / (Vv * Vv));
+          add_hessian(M, x, vd.D[j], omega * g[j] / Vv);
+        add_hessian(M, x, V, -omega * vd.N / (Vv * Vv));
         Vec gV{};
         add_gradient(gV, V, 1.);
-        add_symmetric_outer(H, vd.grad_N, gV, -omega / (Vv * Vv));
-        add_symmetric_outer(H, gV, gV, omega * vd.N / (Vv * Vv * Vv));
+        const Support sV = support(V), sN(vd.points);
+        add_symmetric_outer(M, vd.grad_N, sN, gV, sV, -omega / (Vv * Vv));
+        add_symmetric_outer(M, gV, sV, gV, sV, omega * vd.N / (Vv * Vv * Vv));
       }
 
       /** A polygon vertex in closed form: @f$x = (1-s)x_{P_1} + s
@@ -469,9 +538,11 @@ namespace TissueContact
       }
 
 
-      /** Stage 4: the Hessian, J^T HP J (J: d primitive / d coordinate)
-       * plus the first-derivative terms of the cut ratios, the depths and
-       * the normal. */
+      /** Stage 4: the Hessian by the chain rule in two levels
+       * (doc/theory/05-contact.md, sec. 5.1, level 2): the primitives are
+       * simple functions of z = (the 21 coordinates, the cut ratios s_k,
+       * the depths G_t, the normal nu), z of the coordinates; H = Z^T Hz Z
+       * plus the first-derivative terms of s_k, G_t and nu. */
       void
       chain_hessian(const std::array<VertexForm, 9>  &form,
                     const Points                     &x,
@@ -494,90 +565,178 @@ namespace TissueContact
         const auto        &Pnu   = normal.Pnu;
         const auto        &dnu   = normal.dnu;
         const Tensor<1, 3> w_nu({w[inu], w[inu + 1], w[inu + 2]});
-        // J: d(primitive)/d(coordinate)
-        std::array<Vec, 39> J;
+
+        // z: the 21 coordinates, then s_k (k < m), G_t (t < 3), nu (3)
+        const unsigned int zs = n, zG = n + m, znu = n + m + 3,
+                           q = m + 6; // the z beyond the coordinates
+        // dz/dprimitive: at most 3 (z, coefficient) entries per primitive
+        struct Entry
+        {
+          unsigned int z;
+          double       c;
+        };
+        std::array<std::array<Entry, 3>, 39> L;
+        std::array<unsigned int, 39>         nL{};
         for (unsigned int k = 0; k < m; ++k)
           {
             const VertexForm &v = form[k];
-            for (unsigned int d = 0; d < 4; ++d)
-              J[4 * k + d].fill(0.);
             for (unsigned int d = 0; d < 3; ++d)
               {
-                J[4 * k + d][3 * v.P1 + d] += 1. - v.s;
-                J[4 * k + d][3 * v.P2 + d] += v.s;
+                auto &e = L[4 * k + d];
+                auto &l = nL[4 * k + d];
+                e[l++]  = {3 * v.P1 + d, 1. - v.s};
+                if (v.P2 != v.P1)
+                  e[l++] = {3 * v.P2 + d, v.s};
+                if (v.s_varies)
+                  e[l++] = {zs + k, x[v.P2][d] - x[v.P1][d]};
               }
-            Vec &JG = J[4 * k + 3];
+            auto &e = L[4 * k + 3];
+            auto &l = nL[4 * k + 3];
             if (v.t1 < 3)
-              for (unsigned int i = 0; i < n; ++i)
-                JG[i] = (1. - v.s) * depth[v.t1].grad_G[i] +
-                        v.s * depth[v.t2].grad_G[i];
+              {
+                e[l++] = {zG + v.t1, 1. - v.s};
+                if (v.t2 != v.t1)
+                  e[l++] = {zG + v.t2, v.s};
+              }
             if (v.s_varies)
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  for (unsigned int d = 0; d < 3; ++d)
-                    J[4 * k + d][i] += (x[v.P2][d] - x[v.P1][d]) * v.grad_s[i];
-                  JG[i] += (v.G2 - v.G1) * v.grad_s[i];
-                }
+              e[l++] = {zs + k, v.G2 - v.G1};
           }
-        for (unsigned int q = 0; q < 3; ++q)
+        for (unsigned int d = 0; d < 3; ++d)
           {
-            J[inu + q].fill(0.);
-            for (unsigned int X = 0; X < 3; ++X)
-              for (unsigned int d = 0; d < 3; ++d)
-                J[inu + q][3 * (4 + X) + d] = dnu[X][q][d];
+            L[inu + d][0] = {znu + d, 1.};
+            nL[inu + d]   = 1;
           }
 
-        // H = J^T HP J
-        std::array<Vec, 39> K; // HP J
+        // Hz = (dprimitive/dz)^T HP (dprimitive/dz) + the primitives'
+        // second derivatives in z, weighted by w: x_k and G_k are bilinear
+        // in s_k and their end values
+        std::array<std::array<double, 36>, 36> Hz;
+        const unsigned int                     nz = n + q;
+        for (unsigned int i = 0; i < nz; ++i)
+          std::fill(Hz[i].begin(), Hz[i].begin() + nz, 0.);
         for (unsigned int a = 0; a < np; ++a)
-          {
-            K[a].fill(0.);
-            for (unsigned int b = 0; b < np; ++b)
-              if (HP[a][b] != 0.)
-                for (unsigned int i = 0; i < n; ++i)
-                  K[a][i] += HP[a][b] * J[b][i];
-          }
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = i; j < n; ++j)
+          for (unsigned int b = 0; b < np; ++b)
             {
-              double h = 0.;
-              for (unsigned int a = 0; a < np; ++a)
-                h += J[a][i] * K[a][j];
-              H[i][j] = H[j][i] = h;
+              const double h = HP[a][b];
+              if (h == 0.)
+                continue;
+              for (unsigned int p = 0; p < nL[a]; ++p)
+                {
+                  const double ha  = L[a][p].c * h;
+                  auto        &row = Hz[L[a][p].z];
+                  for (unsigned int r = 0; r < nL[b]; ++r)
+                    row[L[b][r].z] += ha * L[b][r].c;
+                }
             }
-
-        // + sum_k (dW/dprimitive_k) Hess(primitive_k): the cut ratios s
         for (unsigned int k = 0; k < m; ++k)
           {
             const VertexForm &v = form[k];
             if (!v.s_varies)
               continue;
-            // sigma Hess s
-            add_hessian(H, x, v.a, sigma[k] * v.s_a);
-            add_hessian(H, x, v.b, sigma[k] * v.s_b);
+            const auto add = [&](const unsigned int j, const double c) {
+              Hz[zs + k][j] += c;
+              Hz[j][zs + k] += c;
+            };
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                add(3 * v.P2 + d, w[4 * k + d]);
+                add(3 * v.P1 + d, -w[4 * k + d]);
+              }
+            if (v.t1 < 3)
+              {
+                add(zG + v.t2, w[4 * k + 3]);
+                add(zG + v.t1, -w[4 * k + 3]);
+              }
+          }
+
+        // Z = dz/dcoordinates: the identity, then the columns grad s_k,
+        // grad G_t, dnu_d, each zero outside a few points
+        std::array<const Vec *, 15> Zc{};
+        std::array<Support, 15>     Zs;
+        Vec                         dnu_col[3];
+        for (unsigned int k = 0; k < m; ++k)
+          if (form[k].s_varies)
+            {
+              const VertexForm           &v = form[k];
+              std::array<unsigned int, 8> P;
+              std::copy(v.a.point.begin(), v.a.point.end(), P.begin());
+              std::copy(v.b.point.begin(), v.b.point.end(), P.begin() + 4);
+              Zc[k] = &v.grad_s;
+              Zs[k] = Support(P);
+            }
+        for (unsigned int t = 0; t < 3; ++t)
+          {
+            Zc[m + t] = &depth[t].grad_G;
+            Zs[m + t] = Support(depth[t].points);
+          }
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            dnu_col[d].fill(0.);
+            for (unsigned int X = 0; X < 3; ++X)
+              for (unsigned int e = 0; e < 3; ++e)
+                dnu_col[d][3 * (4 + X) + e] = dnu[X][d][e];
+            Zc[m + 3 + d] = &dnu_col[d];
+            Zs[m + 3 + d] = Support(std::array<unsigned int, 3>{{4, 5, 6}});
+          }
+
+        // H = A + Mh + Mh^T, Mh = Z U^T + (half of the first-derivative
+        // terms below), U = B + Z C / 2 with Hz = [A B; B^T C]. U is kept
+        // transposed and Mh row by row, so that the inner loops run over
+        // 21 contiguous entries
+        std::array<Vec, 15> Ut;
+        for (unsigned int j = 0; j < q; ++j)
+          std::copy(Hz[n + j].begin(), Hz[n + j].begin() + n, Ut[j].begin());
+        for (unsigned int l = 0; l < q; ++l)
+          if (Zc[l] != nullptr)
+            {
+              const Vec &z = *Zc[l];
+              for (unsigned int j = 0; j < q; ++j)
+                {
+                  const double c = 0.5 * Hz[n + j][n + l];
+                  if (c != 0.)
+                    for (unsigned int i = 0; i < n; ++i)
+                      Ut[j][i] += c * z[i];
+                }
+            }
+        Mat Mh;
+        for (auto &row : Mh)
+          row.fill(0.);
+        for (unsigned int j = 0; j < q; ++j)
+          if (Zc[j] != nullptr)
+            {
+              const Vec &z = *Zc[j];
+              for (unsigned int p = 0; p < Zs[j].size; ++p)
+                {
+                  const unsigned int k  = Zs[j].i[p];
+                  const double       zk = z[k];
+                  for (unsigned int i = 0; i < n; ++i)
+                    Mh[k][i] += zk * Ut[j][i];
+                }
+            }
+
+        // + sum_k sigma_k Hess s_k
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            const VertexForm &v = form[k];
+            if (!v.s_varies)
+              continue;
+            add_hessian(Mh, x, v.a, sigma[k] * v.s_a);
+            add_hessian(Mh, x, v.b, sigma[k] * v.s_b);
             Vec ga{}, gb{};
             add_gradient(ga, v.a, 1.);
             add_gradient(gb, v.b, 1.);
-            add_symmetric_outer(H, ga, ga, 0.5 * sigma[k] * v.s_aa);
-            add_symmetric_outer(H, ga, gb, sigma[k] * v.s_ab);
-            add_symmetric_outer(H, gb, gb, 0.5 * sigma[k] * v.s_bb);
-            // sym(grad s (x) r), r = d sigma / d(coordinates) at fixed s
-            Vec          r{};
-            const double wG = w[4 * k + 3];
-            for (unsigned int d = 0; d < 3; ++d)
-              {
-                r[3 * v.P2 + d] += w[4 * k + d];
-                r[3 * v.P1 + d] -= w[4 * k + d];
-              }
-            if (v.t1 < 3)
-              for (unsigned int i = 0; i < n; ++i)
-                r[i] += wG * (depth[v.t2].grad_G[i] - depth[v.t1].grad_G[i]);
-            add_symmetric_outer(H, v.grad_s, r, 1.);
+            const Support sa = support(v.a), sb = support(v.b);
+            add_symmetric_outer(Mh, ga, sa, ga, sa, 0.5 * sigma[k] * v.s_aa);
+            add_symmetric_outer(Mh, ga, sa, gb, sb, sigma[k] * v.s_ab);
+            add_symmetric_outer(Mh, gb, sb, gb, sb, 0.5 * sigma[k] * v.s_bb);
           }
         // + sum_t omega_t Hess G_t, G_t = N_t / V
         for (unsigned int t = 0; t < 3; ++t)
           if (omega[t] != 0.)
-            add_depth_hessian(H, x, V, depth[t], g, omega[t]);
+            add_depth_hessian(Mh, x, V, depth[t], g, omega[t]);
+        for (unsigned int i = 0; i < n; ++i)
+          std::copy(Hz[i].begin(), Hz[i].begin() + n, H[i].begin());
+        add_symmetrized(H, Mh);
         // + Hess(w_nu . nu): with phi(N) = w_nu . N / |N|, p = dphi/dN,
         // M^T (d2phi/dN2) M + the bilinear part p . (dE1 x dE2)
         {
@@ -734,17 +893,22 @@ namespace TissueContact
                     c * S * 0.5 * block[a][b];
             }
       }
-      add_symmetric_outer(H, grad_A, grad_S, c);
+      // the symmetric terms, half of each in Mh (H += Mh + Mh^T below)
+      Mat Mh;
+      for (auto &row : Mh)
+        row.fill(0.);
+      add_symmetric_outer(Mh, grad_A, grad_S, c);
       // Hess S = sum_k 2 (grad G_k (x) grad G_k + G_k Hess G_k)
       for (unsigned int k = 0; k < 3; ++k)
         if (active[k])
           {
-            add_symmetric_outer(H,
+            add_symmetric_outer(Mh,
                                 depth[k].grad_G,
                                 depth[k].grad_G,
                                 2. * c * A * 0.5);
-            add_depth_hessian(H, x, V, depth[k], g, 2. * c * A * depth[k].G);
+            add_depth_hessian(Mh, x, V, depth[k], g, 2. * c * A * depth[k].G);
           }
+      add_symmetrized(H, Mh);
       return true;
     }
   } // namespace Contact

@@ -21,6 +21,7 @@
 
 #include <iomanip>
 #include <iostream>
+#include <limits>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -125,15 +126,21 @@ main(int argc, char **argv)
       const auto rate =
         [&](const std::vector<std::pair<unsigned int, unsigned int>> &list,
             const bool with_hessian) {
-          timer.restart();
-          for (const auto &c : list)
+          // the best of 7 passes: robust to other jobs on the machine
+          double best = std::numeric_limits<double>::max();
+          for (unsigned int pass = 0; pass < 7; ++pass)
             {
-              const auto [tet, tri, g] = pair(c);
-              if (Contact::penalty_kernel(
-                    tet, tri, g, 1., with_hessian, kernel))
-                sink += kernel.gradient[0];
+              timer.restart();
+              for (const auto &c : list)
+                {
+                  const auto [tet, tri, g] = pair(c);
+                  if (Contact::penalty_kernel(
+                        tet, tri, g, 1., with_hessian, kernel))
+                    sink += kernel.gradient[0];
+                }
+              best = std::min(best, timer.wall_time());
             }
-          return list.size() / timer.wall_time();
+          return list.size() / best;
         };
       const double candidates_g  = rate(candidates, false);
       const double candidates_gH = rate(candidates, true);

@@ -70,8 +70,12 @@ main(int argc, char **argv)
              "lumen): "
           << (contact_energy[0] + contact_energy[1] > 0. ? "yes" : "no")
           << std::endl
-          << "snake's width at the apple " << std::fixed << std::setprecision(0)
-          << 1000. * (y_max - y_min) << " mm, undeformed " << 1000. * 2 * R
+          // to the nearest 5 mm: the last millimetre moves with the path
+          // the contact takes (rounding of the tangent)
+          << "snake's width at the apple "
+          << 5 * static_cast<int>(std::round(200. * (y_max - y_min)))
+          << " mm to 5 mm, undeformed "
+          << static_cast<int>(std::round(1000. * 2 * R))
           << " mm (widened: " << (y_max - y_min > 2 * R ? "yes" : "no") << ")"
           << std::endl;
 }

@@ -72,7 +72,10 @@ namespace TissueContact
                                  n3 = cross_product_3d(e1, e2);
       const Number six_volume       = e1 * n1;
 
-      IntersectionPolygon<Number> polygon, clipped;
+      // two buffers, clipped from one into the other in turn
+      IntersectionPolygon<Number>  buffers[2];
+      IntersectionPolygon<Number> *from = &buffers[0], *to = &buffers[1];
+      IntersectionPolygon<Number> &polygon = buffers[0];
       for (unsigned int k = 0; k < 3; ++k)
         {
           const Tensor<1, 3, Number> r = tri[k] - tet[0];
@@ -129,40 +132,45 @@ namespace TissueContact
       // polygon lying in the face plane gets one decision for all its
       // vertices instead of noise-driven alternating ones
       const auto side = [&](const unsigned int i, const Point<3> &p) {
-        const Face        &f     = faces[i];
-        const Tensor<1, 3> r     = p - f.f0;
-        const double       s     = f.normal * r;
-        const double       scale = f.normal_norm * (f.edge_norms + r.norm());
+        const Face        &f = faces[i];
+        const Tensor<1, 3> r = p - f.f0;
+        const double       s = f.normal * r;
+        // |r| <= |r|_1: far from the plane (nearly always) the test needs
+        // no square root, and decides as the exact one does
+        const double r1 = std::abs(r[0]) + std::abs(r[1]) + std::abs(r[2]);
+        if (std::abs(s) > 1e-12 * f.normal_norm * (f.edge_norms + r1))
+          return s;
+        const double scale = f.normal_norm * (f.edge_norms + r.norm());
         return std::abs(s) <= 1e-12 * scale ? 0. : s;
       };
 
-      for (unsigned int i = 0; i < 4 && polygon.n_vertices > 0; ++i)
+      for (unsigned int i = 0; i < 4 && from->n_vertices > 0; ++i)
         {
           const double inward = side(i, value_of(tet[i])) > 0. ? 1. : -1.;
           const auto   inside = [&](const PolygonVertex<Number> &v) {
             const double s = side(i, value_of(v.x)) * inward;
             return s > 0. || (s == 0. && inward > 0.);
           };
-          clipped.n_vertices    = 0;
-          const unsigned int  n = polygon.n_vertices;
+          to->n_vertices        = 0;
+          const unsigned int  n = from->n_vertices;
           std::array<bool, 9> is_inside;
           unsigned int        n_inside = 0;
           for (unsigned int k = 0; k < n; ++k)
-            n_inside += (is_inside[k] = inside(polygon.vertex[k]));
+            n_inside += (is_inside[k] = inside(from->vertex[k]));
           if (n_inside == n)
             continue;
           for (unsigned int k = 0; k < n; ++k)
             {
-              const PolygonVertex<Number> &p    = polygon.vertex[k];
-              const PolygonVertex<Number> &q    = polygon.vertex[(k + 1) % n];
+              const PolygonVertex<Number> &p    = from->vertex[k];
+              const PolygonVertex<Number> &q    = from->vertex[(k + 1) % n];
               const bool                   p_in = is_inside[k];
               const bool                   q_in = is_inside[(k + 1) % n];
               // a convex polygon gains at most one vertex per plane; the
               // guard only protects against pathological rounding
-              if (clipped.n_vertices + 2 > clipped.vertex.size())
+              if (to->n_vertices + 2 > to->vertex.size())
                 break;
               if (p_in)
-                clipped.vertex[clipped.n_vertices++] = p;
+                to->vertex[to->n_vertices++] = p;
               if (p_in != q_in)
                 {
                   // crossing parameter from the barycentric coordinate,
@@ -178,9 +186,8 @@ namespace TissueContact
                     t -= value(t);
                   else if (value(t) > 1.)
                     t += 1. - value(t);
-                  PolygonVertex<Number> &c =
-                    clipped.vertex[clipped.n_vertices++];
-                  c.x = p.x + t * (q.x - p.x);
+                  PolygonVertex<Number> &c = to->vertex[to->n_vertices++];
+                  c.x                      = p.x + t * (q.x - p.x);
                   for (unsigned int j = 0; j < 4; ++j)
                     c.lambda[j] = p.lambda[j] + t * (q.lambda[j] - p.lambda[j]);
                   c.lambda[i] = Number(0.);
@@ -191,9 +198,9 @@ namespace TissueContact
                   c.edge_out = p_in ? 3 + i : p.edge_out;
                 }
             }
-          std::swap(polygon, clipped);
+          std::swap(from, to);
         }
-      return polygon;
+      return *from;
     }
   } // namespace Contact
 } // namespace TissueContact
