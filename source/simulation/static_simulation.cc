@@ -132,7 +132,8 @@ namespace TissueContact
             {"newton_iterations", state.statistics.newton_iterations},
             {"linear_iterations", state.statistics.linear_iterations},
             {"tangent_shifts", state.statistics.tangent_shifts},
-            {"multiplier_updates", state.statistics.multiplier_updates}};
+            {"multiplier_updates", state.statistics.multiplier_updates},
+            {"direct_fallbacks", state.statistics.direct_fallbacks}};
           c.vectors = {{"u", u}, {"u_prev", state.u_prev}};
           const std::vector<double> multipliers =
             nonlinear_problem.multipliers();
@@ -180,6 +181,10 @@ namespace TissueContact
         state.statistics.tangent_shifts = restart->scalar("tangent_shifts");
         state.statistics.multiplier_updates =
           restart->scalar("multiplier_updates");
+        // absent from checkpoints written before it was counted
+        if (restart->scalars.count("direct_fallbacks") > 0)
+          state.statistics.direct_fallbacks =
+            restart->scalar("direct_fallbacks");
         const auto n_multipliers = nonlinear_problem.multipliers().size();
         if (n_multipliers > 0)
           {
@@ -241,6 +246,11 @@ namespace TissueContact
         << (statistics.multiplier_updates > 0 ?
               ", " + std::to_string(statistics.multiplier_updates) +
                 " augmented-Lagrangian updates" :
+              std::string())
+        << (statistics.direct_fallbacks > 0 ?
+              ", " + std::to_string(statistics.direct_fallbacks) +
+                " linear solves by the direct solver where GMRES+AMG did not "
+                "converge" :
               std::string())
         << "\n"
         << "  max |u_i| = " << u_max

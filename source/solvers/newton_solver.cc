@@ -361,6 +361,7 @@ namespace TissueContact
             MatrixTools::apply_boundary_values(zero, K, du, rhs, true);
             const double eta =
               linear_solver->forcing(r, r_previous, eta_previous, tolerance);
+            const unsigned int fallbacks = linear_solver->direct_fallbacks();
             info.linear_iterations = linear_solver->solve(K, du, rhs, eta);
             du += lift;
             r_previous   = r;
@@ -398,6 +399,8 @@ namespace TissueContact
                       }
                   }
               }
+            statistics.direct_fallbacks +=
+              linear_solver->direct_fallbacks() - fallbacks;
           }
 
           // LOOP 3: line search. Energy merit (Armijo) when asked for and

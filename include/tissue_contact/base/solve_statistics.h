@@ -34,5 +34,8 @@ namespace TissueContact
     unsigned int rounding_convergences = 0;
     /** Augmented-Lagrangian updates, each followed by another solve. */
     unsigned int multiplier_updates = 0;
+    /** Linear solves of Type = automatic that GMRES+AMG did not converge
+     * and the direct solver did (LinearSolver::solve()). */
+    unsigned int direct_fallbacks = 0;
   };
 } // namespace TissueContact

@@ -48,6 +48,9 @@ namespace TissueContact
         std::string forcing_term = "fixed";
         /** Keep the AMG hierarchy from one solve to the next. */
         bool reuse_preconditioner = false;
+        /** Solve directly where GMRES+AMG does not converge (set by
+         * resolved() for Type = automatic; LinearSolver::solve()). */
+        bool direct_fallback = false;
 
         /** Type = automatic chooses the direct solver below this many
          * unknowns and GMRES+AMG from it on: the crossover measured on a
@@ -60,7 +63,8 @@ namespace TissueContact
          * it chooses for @p n_dofs unknowns: the direct solver, or GMRES+AMG
          * with the settings its crossover was measured with (the
          * Eisenstat-Walker forcing term, the hierarchy reused, the six
-         * rigid-body modes). With AMG's own defaults (a fixed tolerance of
+         * rigid-body modes, the direct solver where GMRES does not
+         * converge). With AMG's own defaults (a fixed tolerance of
          * 0.1, a new three-mode hierarchy per solve) the falling rods
          * (25 704 unknowns, 30 steps) took 47 s against the direct
          * solver's 27 s; with these, 21 s. */
@@ -90,6 +94,7 @@ namespace TissueContact
                   p.forcing_term         = "Eisenstat-Walker";
                   p.reuse_preconditioner = true;
                   p.amg_rotations        = true;
+                  p.direct_fallback      = true;
                 }
             }
           return p;
@@ -153,9 +158,23 @@ namespace TissueContact
               const double eta_previous,
               const double tolerance) const;
 
+      /** The solves of Type = automatic that fell back to the direct
+       * solver, since construction. */
+      unsigned int
+      direct_fallbacks() const
+      {
+        return n_direct_fallbacks;
+      }
+
       const Parameters parameters;
 
     private:
+      /** Sparse LU (UMFPACK or MUMPS, as Direct solver says). */
+      void
+      solve_direct(const SparseMatrix<double> &K,
+                   Vector<double>             &x,
+                   const Vector<double>       &b) const;
+
       /** The near-null space, mode after mode (ML's layout). */
       std::vector<double> null_space;
       unsigned int        null_space_dimension;
@@ -173,7 +192,8 @@ namespace TissueContact
       mutable TrilinosWrappers::SparseMatrix amg_matrix;
       /** Iterations per decade of residual of the first solve with the
        * current hierarchy. */
-      mutable double fresh_rate = 0.;
+      mutable double       fresh_rate         = 0.;
+      mutable unsigned int n_direct_fallbacks = 0;
     };
   } // namespace Solvers
 } // namespace TissueContact
