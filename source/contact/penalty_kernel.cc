@@ -123,16 +123,15 @@ namespace TissueContact
         unsigned int                size = 0;
         std::array<unsigned int, n> i;
 
-        /** the coordinates of the listed points */
         Support() = default;
 
+        /** the coordinates of the listed points (repeats allowed) */
         template <std::size_t N>
-        explicit Support(const std::array<unsigned int, N> &points,
-                         const unsigned int                 n_points = N)
+        explicit Support(const std::array<unsigned int, N> &points)
         {
           std::array<bool, 7> on{};
-          for (unsigned int k = 0; k < n_points; ++k)
-            on[points[k]] = true;
+          for (const unsigned int P : points)
+            on[P] = true;
           for (unsigned int P = 0; P < 7; ++P)
             if (on[P])
               for (unsigned int d = 0; d < 3; ++d)

@@ -233,8 +233,9 @@ namespace TissueContact
                                   relative_tolerance;
       unsigned int iterations = 1;
       // Type = automatic: chosen by the size of this matrix
-      const std::string type = parameters.resolved(K.m()).type;
-      x                      = 0.;
+      const Parameters   chosen = parameters.resolved(K.m());
+      const std::string &type   = chosen.type;
+      x                         = 0.;
       if (type == "direct")
         solve_direct(K, x, b);
       else if (type == "GMRES+AMG")
@@ -244,10 +245,10 @@ namespace TissueContact
           // inexact Newton: the iterate after the cap is used as is, unless
           // the type was chosen automatically: then a system that a fresh
           // hierarchy did not solve either (an indefinite tangent) gets an
-          // exact step. On the full-scale knee such solves ran to the cap,
-          // 2 000 iterations, twice and once per tangent shift, 5.8 ms each
-          if (!converged &&
-              (parameters.direct_fallback || parameters.type == "automatic"))
+          // exact step. On the full-scale knee such solves ran to the cap
+          // of 1 000 iterations twice (a fresh hierarchy the second time),
+          // and again per tangent shift, at 5.8 ms per iteration
+          if (!converged && chosen.direct_fallback)
             {
               solve_direct(K, x, b);
               ++n_direct_fallbacks;
