@@ -60,8 +60,11 @@ namespace TissueContact
           }
       std::vector<BoundingBox<3>> boxes;
       for (const auto &t : tets)
-        boxes.emplace_back(std::vector<Point<3>>{
-          surface.X[t[0]], surface.X[t[1]], surface.X[t[2]], surface.X[t[3]]});
+        boxes.push_back(
+          bounding_box(std::array<Point<3>, 4>{{surface.X[t[0]],
+                                                surface.X[t[1]],
+                                                surface.X[t[2]],
+                                                surface.X[t[3]]}}));
       tree        = std::make_unique<BoundingVolumeTree>(boxes);
       x_at_build  = surface.X;
       double size = 0.;
@@ -124,8 +127,8 @@ namespace TissueContact
       std::vector<BoundingBox<3>> boxes;
       boxes.reserve(tets.size());
       for (const auto &t : tets)
-        boxes.emplace_back(
-          std::vector<Point<3>>{x[t[0]], x[t[1]], x[t[2]], x[t[3]]});
+        boxes.push_back(bounding_box(
+          std::array<Point<3>, 4>{{x[t[0]], x[t[1]], x[t[2]], x[t[3]]}}));
       // a refitted tree stays exact but degrades when objects that were
       // neighbours drift apart: rebuild once a vertex has moved farther than
       // the mean tetrahedron size since the last build (a rebuild costs
@@ -176,7 +179,8 @@ namespace TissueContact
       if (!surface_of_a_pair(t))
         return;
       const auto    &tv = surface.triangles[t];
-      BoundingBox<3> box(std::vector<Point<3>>{x[tv[0]], x[tv[1]], x[tv[2]]});
+      BoundingBox<3> box =
+        bounding_box(std::array<Point<3>, 3>{{x[tv[0]], x[tv[1]], x[tv[2]]}});
       if (margin > 0.)
         box.extend(margin);
       tree->for_each_overlap(box, [&](const unsigned int k) {

@@ -118,31 +118,6 @@ namespace TissueContact
     }
 
 
-    void
-    BoundingVolumeTree::for_each_overlap(
-      const BoundingBox<3>                    &box,
-      const std::function<void(unsigned int)> &f) const
-    {
-      if (nodes.empty())
-        return;
-      std::vector<int> stack{0};
-      while (!stack.empty())
-        {
-          const Node &n = nodes[stack.back()];
-          stack.pop_back();
-          if (n.box.get_neighbor_type(box) == NeighborType::not_neighbors)
-            continue;
-          if (n.left < 0)
-            f(n.object);
-          else
-            {
-              stack.push_back(n.left);
-              stack.push_back(n.right);
-            }
-        }
-    }
-
-
     double
     BoundingVolumeTree::nearest(
       const Point<3>                                    &p,
