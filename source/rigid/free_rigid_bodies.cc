@@ -3,6 +3,8 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
+
 namespace TissueContact
 {
   namespace Rigid
@@ -199,29 +201,47 @@ namespace TissueContact
     {
       AssertDimension(fe.n_rows(), n_fe);
       full.reinit(n_dofs(), n_dofs());
-      std::vector<types::global_dof_index> targets_i, targets_j;
-      const auto targets = [&](const types::global_dof_index         i,
-                               std::vector<types::global_dof_index> &t) {
-        t.assign(1, i);
-        if (i < n_fe && owner[i] >= 0)
-          for (unsigned int m = 0; m < 6; ++m)
-            t.push_back(first_unknown(owner[i]) + m);
-      };
+      // the entries (a, c) for a in targets(i), c in targets(j) of every
+      // entry (i, j) of @p fe, targets(i) being i and, for a node of a body,
+      // the body's six unknowns: row i's columns gathered and sorted once,
+      // and appended to the rows of i's body, which are sorted at the end
+      // (entry by entry this was a third of a pattern build on the knee)
+      std::vector<std::vector<types::global_dof_index>> body_rows(
+        bodies.size());
+      std::vector<types::global_dof_index> columns;
       for (types::global_dof_index i = 0; i < n_fe; ++i)
         {
-          targets(i, targets_i);
+          columns.clear();
           for (auto e = fe.begin(i); e != fe.end(i); ++e)
             {
-              targets(e->column(), targets_j);
-              for (const auto a : targets_i)
-                for (const auto c : targets_j)
-                  full.add(a, c);
+              const types::global_dof_index j = e->column();
+              columns.push_back(j);
+              if (owner[j] >= 0)
+                for (unsigned int m = 0; m < 6; ++m)
+                  columns.push_back(first_unknown(owner[j]) + m);
             }
+          std::sort(columns.begin(), columns.end());
+          columns.erase(std::unique(columns.begin(), columns.end()),
+                        columns.end());
+          full.add_entries(i, columns.begin(), columns.end(), true);
+          if (owner[i] >= 0)
+            body_rows[owner[i]].insert(body_rows[owner[i]].end(),
+                                       columns.begin(),
+                                       columns.end());
         }
       for (unsigned int b = 0; b < bodies.size(); ++b)
-        for (unsigned int m = 0; m < 6; ++m)
+        {
+          auto &row = body_rows[b];
           for (unsigned int l = 0; l < 6; ++l)
-            full.add(first_unknown(b) + m, first_unknown(b) + l);
+            row.push_back(first_unknown(b) + l);
+          std::sort(row.begin(), row.end());
+          row.erase(std::unique(row.begin(), row.end()), row.end());
+          for (unsigned int m = 0; m < 6; ++m)
+            full.add_entries(first_unknown(b) + m,
+                             row.begin(),
+                             row.end(),
+                             true);
+        }
     }
 
 
