@@ -148,17 +148,6 @@ namespace TissueContact
     }
 
 
-    template <typename F>
-    void
-    BodyContactAssembler::for_each_candidate(const std::vector<Point<3>> &x,
-                                             const double margin,
-                                             const F     &f) const
-    {
-      for (unsigned int t = 0; t < surface.triangles.size(); ++t)
-        for_each_candidate_of(t, x, margin, f);
-    }
-
-
     bool
     BodyContactAssembler::surface_of_a_pair(const unsigned int t) const
     {
@@ -413,27 +402,46 @@ namespace TissueContact
       // the vertices' couplings first (7 x 7 per pair, in sorted rows),
       // then each vertex row expanded to its 3 x 3 DoF blocks: a ninth of
       // the insertions of adding each pair's 21 x 21 DoFs (the pattern
-      // builds were 7 % of the knee-scale tube's run that way)
+      // builds were 7 % of the knee-scale tube's run that way). The
+      // triangles' searches in parallel, their pairs' vertices added in
+      // the triangles' order
       DynamicSparsityPattern vertex_pattern(surface.X.size());
-      for_each_candidate(
-        x,
-        margin,
-        [&](const unsigned int t, const unsigned int k, const BodyContact &p) {
-          if (!may_gain_energy(x, t, k, p, margin))
-            return;
-          const auto                 &tv = surface.triangles[t];
-          std::array<unsigned int, 7> v  = {{tets[k][0],
-                                             tets[k][1],
-                                             tets[k][2],
-                                             tets[k][3],
-                                             tv[0],
-                                             tv[1],
-                                             tv[2]}};
-          std::sort(v.begin(), v.end());
-          const auto end = std::unique(v.begin(), v.end());
-          for (auto a = v.begin(); a != end; ++a)
-            vertex_pattern.add_entries(*a, v.begin(), end, true);
-        });
+      using Vertices = std::array<unsigned int, 8>; // sorted, then the count
+      per_surface_triangle(
+        [&](const unsigned int i, std::vector<Vertices> &found) {
+          found.clear();
+          for_each_candidate_of(surface_triangles[i],
+                                x,
+                                margin,
+                                [&](const unsigned int t,
+                                    const unsigned int k,
+                                    const BodyContact &p) {
+                                  if (!may_gain_energy(x, t, k, p, margin))
+                                    return;
+                                  const auto &tv = surface.triangles[t];
+                                  Vertices    v  = {{tets[k][0],
+                                                     tets[k][1],
+                                                     tets[k][2],
+                                                     tets[k][3],
+                                                     tv[0],
+                                                     tv[1],
+                                                     tv[2],
+                                                     0}};
+                                  std::sort(v.begin(), v.begin() + 7);
+                                  v[7] = std::unique(v.begin(), v.begin() + 7) -
+                                         v.begin();
+                                  found.push_back(v);
+                                });
+        },
+        [&](const std::vector<Vertices> &found) {
+          for (const Vertices &v : found)
+            for (unsigned int a = 0; a < v[7]; ++a)
+              vertex_pattern.add_entries(v[a],
+                                         v.begin(),
+                                         v.begin() + v[7],
+                                         true);
+        },
+        std::vector<Vertices>());
       std::vector<types::global_dof_index> columns;
       for (unsigned int a = 0; a < vertex_pattern.n_rows(); ++a)
         {

@@ -225,16 +225,10 @@ namespace TissueContact
           f(candidates[c].t, candidates[c].k, pairs[candidates[c].pair]);
       }
 
-      /** Call @p f(t, k, pair) for every candidate pair of triangle t
-       * and tetrahedron k of a body pair (boxes overlapping after enlarging
-       * the triangle's by @p margin), triangles that are faces of the
-       * tetrahedron excluded. */
-      template <typename F>
-      void
-      for_each_candidate(const std::vector<Point<3>> &x,
-                         const double                 margin,
-                         const F                     &f) const;
-      /** for_each_candidate() for one triangle @p t. */
+      /** Call @p f(t, k, pair) for every candidate pair of triangle @p t
+       * and a tetrahedron k of a body pair (boxes overlapping after
+       * enlarging the triangle's by @p margin), triangles that are faces of
+       * the tetrahedron excluded. */
       template <typename F>
       void
       for_each_candidate_of(const unsigned int           t,
