@@ -209,6 +209,34 @@ namespace TissueContact
       const auto &[tet, tri, g] = geometry;
       if (*std::max_element(g.begin(), g.end()) <= 0.)
         return true;
+      // the boxes of triangle and tetrahedron apart by more than 1e-6 of the
+      // tetrahedron's size: the clipping could not find a point within
+      // roundoff of both, so the pair has no intersection. Cheaper than the
+      // tests below, and most of a candidate list's pairs fail it
+      {
+        std::array<double, 3> lo, hi, tri_lo, tri_hi;
+        double                size = 0.;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            lo[d] = hi[d] = tet[0][d];
+            for (unsigned int j = 1; j < 4; ++j)
+              {
+                lo[d] = std::min(lo[d], tet[j][d]);
+                hi[d] = std::max(hi[d], tet[j][d]);
+              }
+            tri_lo[d] = tri_hi[d] = tri[0][d];
+            for (unsigned int a = 1; a < 3; ++a)
+              {
+                tri_lo[d] = std::min(tri_lo[d], tri[a][d]);
+                tri_hi[d] = std::max(tri_hi[d], tri[a][d]);
+              }
+            size += hi[d] - lo[d];
+          }
+        const double gap = 1e-6 * size;
+        for (unsigned int d = 0; d < 3; ++d)
+          if (tri_lo[d] > hi[d] + gap || tri_hi[d] < lo[d] - gap)
+            return true;
+      }
       // barycentric coordinates of the triangle's vertices
       const Tensor<1, 3> e1 = tet[1] - tet[0], e2 = tet[2] - tet[0],
                          e3   = tet[3] - tet[0];
