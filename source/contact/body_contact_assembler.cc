@@ -212,7 +212,7 @@ namespace TissueContact
       // the boxes of triangle and tetrahedron apart by more than 1e-6 of the
       // tetrahedron's size: the clipping could not find a point within
       // roundoff of both, so the pair has no intersection. Cheaper than the
-      // tests below, and most of a candidate list's pairs fail it
+      // tests below
       {
         std::array<double, 3> lo, hi, tri_lo, tri_hi;
         double                size = 0.;

@@ -205,7 +205,8 @@ namespace TissueContact
       // entry (i, j) of @p fe, targets(i) being i and, for a node of a body,
       // the body's six unknowns: row i's columns gathered and sorted once,
       // and appended to the rows of i's body, which are sorted at the end
-      // (entry by entry this was a third of a pattern build on the knee)
+      // (entry by entry this was a third of a pattern build on the coarse
+      // knee)
       std::vector<std::vector<types::global_dof_index>> body_rows(
         bodies.size());
       std::vector<types::global_dof_index> columns;

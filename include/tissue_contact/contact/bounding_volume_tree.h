@@ -3,8 +3,10 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
 #include <array>
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace TissueContact
@@ -18,8 +20,8 @@ namespace TissueContact
      * BoundingBox::get_neighbor_type() (each lower bound shrunk by one
      * relative unit roundoff before it is compared with the other box's
      * upper bound), so the same pairs pass, but inline and without that
-     * function's classification of the kind of neighbour (which allocated
-     * and was 10 % of the full knee's run time).
+     * function's classification of the kind of neighbour (which allocates
+     * two vectors per call: 10 % of a profile of the full knee).
      */
     inline bool
     overlap(const BoundingBox<3> &a, const BoundingBox<3> &b)
@@ -79,7 +81,8 @@ namespace TissueContact
         if (nodes.empty())
           return;
         // a median split halves the objects at each level: the depth is
-        // at most log2(n) + 1, and the stack holds one node per level
+        // at most log2(n) + 1, and the stack holds at most one node per
+        // level and the root
         std::array<int, 66> stack;
         unsigned int        top = 0;
         stack[top++]            = 0;
