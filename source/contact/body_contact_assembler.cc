@@ -61,10 +61,10 @@ namespace TissueContact
       std::vector<BoundingBox<3>> boxes;
       for (const auto &t : tets)
         boxes.push_back(
-          bounding_box(std::array<Point<3>, 4>{{surface.X[t[0]],
-                                                surface.X[t[1]],
-                                                surface.X[t[2]],
-                                                surface.X[t[3]]}}));
+          BoundingBox<3>(std::array<Point<3>, 4>{{surface.X[t[0]],
+                                                  surface.X[t[1]],
+                                                  surface.X[t[2]],
+                                                  surface.X[t[3]]}}));
       tree        = std::make_unique<BoundingVolumeTree>(boxes);
       x_at_build  = surface.X;
       double size = 0.;
@@ -127,7 +127,7 @@ namespace TissueContact
       std::vector<BoundingBox<3>> boxes;
       boxes.reserve(tets.size());
       for (const auto &t : tets)
-        boxes.push_back(bounding_box(
+        boxes.push_back(BoundingBox<3>(
           std::array<Point<3>, 4>{{x[t[0]], x[t[1]], x[t[2]], x[t[3]]}}));
       // a refitted tree stays exact but degrades when objects that were
       // neighbours drift apart: rebuild once a vertex has moved farther than
@@ -169,7 +169,7 @@ namespace TissueContact
         return;
       const auto    &tv = surface.triangles[t];
       BoundingBox<3> box =
-        bounding_box(std::array<Point<3>, 3>{{x[tv[0]], x[tv[1]], x[tv[2]]}});
+        BoundingBox<3>(std::array<Point<3>, 3>{{x[tv[0]], x[tv[1]], x[tv[2]]}});
       if (margin > 0.)
         box.extend(margin);
       tree->for_each_overlap(box, [&](const unsigned int k) {
@@ -214,25 +214,11 @@ namespace TissueContact
       // roundoff of both, so the pair has no intersection. Cheaper than the
       // tests below
       {
-        std::array<double, 3> lo, hi, tri_lo, tri_hi;
-        double                size = 0.;
-        for (unsigned int d = 0; d < 3; ++d)
-          {
-            lo[d] = hi[d] = tet[0][d];
-            for (unsigned int j = 1; j < 4; ++j)
-              {
-                lo[d] = std::min(lo[d], tet[j][d]);
-                hi[d] = std::max(hi[d], tet[j][d]);
-              }
-            tri_lo[d] = tri_hi[d] = tri[0][d];
-            for (unsigned int a = 1; a < 3; ++a)
-              {
-                tri_lo[d] = std::min(tri_lo[d], tri[a][d]);
-                tri_hi[d] = std::max(tri_hi[d], tri[a][d]);
-              }
-            size += hi[d] - lo[d];
-          }
-        const double gap = 1e-6 * size;
+        const BoundingBox<3> tet_box(tet), tri_box(tri);
+        const auto &[lo, hi]         = tet_box.get_boundary_points();
+        const auto &[tri_lo, tri_hi] = tri_box.get_boundary_points();
+        const double gap =
+          1e-6 * (hi[0] - lo[0] + hi[1] - lo[1] + hi[2] - lo[2]);
         for (unsigned int d = 0; d < 3; ++d)
           if (tri_lo[d] > hi[d] + gap || tri_hi[d] < lo[d] - gap)
             return true;

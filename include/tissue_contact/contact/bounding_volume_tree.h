@@ -35,21 +35,6 @@ namespace TissueContact
       return true;
     }
 
-    /** The smallest box holding the points @p p (no allocation). */
-    template <std::size_t n>
-    inline BoundingBox<3>
-    bounding_box(const std::array<Point<3>, n> &p)
-    {
-      std::pair<Point<3>, Point<3>> corners(p[0], p[0]);
-      for (std::size_t i = 1; i < n; ++i)
-        for (unsigned int d = 0; d < 3; ++d)
-          {
-            corners.first[d]  = std::min(corners.first[d], p[i][d]);
-            corners.second[d] = std::max(corners.second[d], p[i][d]);
-          }
-      return BoundingBox<3>(corners);
-    }
-
     /**
      * A binary tree of axis-aligned bounding boxes over a set of objects
      * (tetrahedra, triangles), the broad phase of dissertation sec. 5.4.5:
