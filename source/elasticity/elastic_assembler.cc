@@ -39,9 +39,7 @@ namespace TissueContact
         bool               valid = true;
       };
 
-      // Voigt index pairs: 11 22 33 23 13 12
-      constexpr unsigned int voigt[6][2] =
-        {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+      using Materials::VoigtTangent;
 
       /**
        * Add the element terms of a pressure @f$\bar p@f$ constant over the
@@ -56,20 +54,20 @@ namespace TissueContact
       add_pressure(const Tensor<2, 3>    &F,
                    const double           p,
                    SymmetricTensor<2, 3> &S,
-                   SymmetricTensor<4, 3> *CC)
+                   VoigtTangent          *CC)
       {
         const SymmetricTensor<2, 3> Ci = invert(symmetrize(transpose(F) * F));
         const double                pJ = p * determinant(F);
         S += pJ * Ci;
         if (CC == nullptr)
           return;
-        // each of the 36 stored entries once
+        const auto &voigt = VoigtTangent::index;
         for (unsigned int a = 0; a < 6; ++a)
           for (unsigned int b = 0; b < 6; ++b)
             {
               const unsigned int I = voigt[a][0], J = voigt[a][1];
               const unsigned int K = voigt[b][0], L = voigt[b][1];
-              (*CC)[I][J][K][L] +=
+              CC->D[a][b] +=
                 pJ * (Ci[I][J] * Ci[K][L] - Ci[I][K] * Ci[J][L] -
                       Ci[I][L] * Ci[J][K]);
             }
@@ -414,7 +412,7 @@ namespace TissueContact
           const Materials::HyperelasticMaterial *hyper = cell_hyperelastic[c];
           Materials::MaterialResponse            m;
           SymmetricTensor<2, 3>                  S;
-          SymmetricTensor<4, 3>                  CC;
+          VoigtTangent                           CC;
 
           if (!single_rotation_index.empty() && single_rotation_index[c] >= 0)
             {
@@ -527,12 +525,9 @@ namespace TissueContact
 
               if (hyper != nullptr)
                 {
-                  // K_ab = B_a^T D B_b + (g_a . S g_b) I   (Voigt D of CC)
-                  double D[6][6];
-                  for (unsigned int p = 0; p < 6; ++p)
-                    for (unsigned int r = p; r < 6; ++r)
-                      D[p][r] = D[r][p] =
-                        CC[voigt[p][0]][voigt[p][1]][voigt[r][0]][voigt[r][1]];
+                  // K_ab = B_a^T D B_b + (g_a . S g_b) I   (D = CC in Voigt
+                  // form)
+                  const auto &D = CC.D;
                   for (unsigned int a = 0; a < n_nodes; ++a)
                     {
                       const Tensor<1, 3> &ga = g[a];
@@ -878,7 +873,8 @@ namespace TissueContact
           out.strain_energy_density[c] = psi / volume;
           sigma /= volume;
           for (unsigned int i = 0; i < 6; ++i)
-            out.cauchy_stress[i][c] = sigma[voigt[i][0]][voigt[i][1]];
+            out.cauchy_stress[i][c] = sigma[VoigtTangent::index[i][0]]
+                                           [VoigtTangent::index[i][1]];
           const Tensor<2, 3> dev =
             sigma - trace(sigma) / 3. * unit_symmetric_tensor<3>();
           out.von_mises[c] = std::sqrt(1.5 * scalar_product(dev, dev));

@@ -60,7 +60,7 @@ namespace TissueContact
     Corotated::stress_C(const SymmetricTensor<2, 3> &C,
                         const Point<3> &,
                         SymmetricTensor<2, 3> &S,
-                        SymmetricTensor<4, 3> *CC) const
+                        VoigtTangent          *CC) const
     {
       const auto   e   = principal_stretches(C);
       const double tau = e[0].first + e[1].first + e[2].first - 3.;
@@ -76,7 +76,7 @@ namespace TissueContact
       if (CC == nullptr)
         return;
       // (M7)
-      *CC              = SymmetricTensor<4, 3>();
+      *CC              = VoigtTangent();
       const double top = 2. * mu - lambda * tau;
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = i; j < 3; ++j)
@@ -84,17 +84,17 @@ namespace TissueContact
             const double li = e[i].first, lj = e[j].first;
             const double c = top / (li * lj * (li + lj));
             if (i == j)
-              *CC += 2. * c * outer_product(M_ii[i], M_ii[i]);
+              CC->add_outer(2. * c, M_ii[i], M_ii[i]);
             else
               {
                 const SymmetricTensor<2, 3> M = basis(e[i].second, e[j].second);
-                *CC += 4. * c * outer_product(M, M);
+                CC->add_outer(4. * c, M, M);
               }
           }
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int k = 0; k < 3; ++k)
-          *CC += lambda / (e[i].first * e[k].first) *
-                 outer_product(M_ii[i], M_ii[k]);
+          CC->add_outer(lambda / (e[i].first * e[k].first), M_ii[i], M_ii[k]);
+      CC->mirror_upper();
     }
   } // namespace Materials
 } // namespace TissueContact

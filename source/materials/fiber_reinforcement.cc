@@ -68,7 +68,7 @@ namespace TissueContact
     FiberReinforcement::stress_C(const SymmetricTensor<2, 3> &C,
                                  const Point<3>              &X,
                                  SymmetricTensor<2, 3>       &S,
-                                 SymmetricTensor<4, 3>       *CC) const
+                                 VoigtTangent                *CC) const
     {
       ground->stress_C(C, X, S, CC);
       const Tensor<1, 3>          f   = fiber_direction(X);
@@ -77,7 +77,7 @@ namespace TissueContact
       const SymmetricTensor<2, 3> ff  = symmetrize(outer_product(f, f));
       S += 2. * alpha_f * beta_f * (e - 1.) * ff;
       if (CC != nullptr)
-        *CC += 4. * alpha_f * beta_f * beta_f * e * outer_product(ff, ff);
+        CC->add_outer(4. * alpha_f * beta_f * beta_f * e, ff, ff);
     }
   } // namespace Materials
 } // namespace TissueContact

@@ -38,12 +38,12 @@ namespace TissueContact
     {
       const SymmetricTensor<2, 3> C = right_cauchy_green(F);
       SymmetricTensor<2, 3>       S;
-      SymmetricTensor<4, 3>       CC;
+      VoigtTangent                CC;
       stress_C(C, X, S, &CC);
       response.psi = energy_C(C, X);
       push_forward_tangent(F,
                            static_cast<Tensor<2, 3>>(S),
-                           static_cast<Tensor<4, 3>>(CC),
+                           CC.tensor(),
                            response.P,
                            response.A);
     }

@@ -24,48 +24,56 @@ namespace TissueContact
     IsotropicMaterial::stress_C(const SymmetricTensor<2, 3> &C,
                                 const Point<3> &,
                                 SymmetricTensor<2, 3> &S,
-                                SymmetricTensor<4, 3> *CC) const
+                                VoigtTangent          *CC) const
     {
       const Invariants            I     = invariants(C);
-      const InvariantDerivatives  D     = psi_derivatives(I);
+      const InvariantDerivatives  Psi   = psi_derivatives(I);
       const SymmetricTensor<2, 3> Id    = unit_symmetric_tensor<3>();
       const SymmetricTensor<2, 3> C_inv = invert(C);
 
       // G_i = dI_i/dC
       const SymmetricTensor<2, 3> G[3] = {Id, I.I1 * Id - C, I.I3 * C_inv};
 
-      S = 2. * (D.d[0] * G[0] + D.d[1] * G[1] + D.d[2] * G[2]);
+      S = 2. * (Psi.d[0] * G[0] + Psi.d[1] * G[1] + Psi.d[2] * G[2]);
 
       if (CC == nullptr)
         return;
 
-      // one pass over the 36 independent entries (A <= B, K <= L):
+      // (M3):
       // sum_ij Psi_ij G_i x G_j
       //   + Psi_2 (I x I - II)                          [d^2 I2 / dC dC]
       //   + Psi_3 I3 (C^-1 x C^-1 - C^-1 (.) C^-1)      [d^2 I3 / dC dC]
-      SymmetricTensor<4, 3> &T  = *CC;
-      const double           c3 = D.d[2] * I.I3;
-      for (unsigned int A = 0; A < 3; ++A)
-        for (unsigned int B = A; B < 3; ++B)
+      // in Voigt form (M3V): the 21 entries p <= q of D, each in closed
+      // form, mirrored
+      const auto  &index = VoigtTangent::index;
+      auto        &D     = CC->D;
+      const double c3    = Psi.d[2] * I.I3;
+      double       g[3][6], h[3][6]; // h_j,p = sum_i Psi_ij G_i,p
+      for (unsigned int p = 0; p < 6; ++p)
+        {
+          const unsigned int A = index[p][0], B = index[p][1];
+          for (unsigned int i = 0; i < 3; ++i)
+            g[i][p] = G[i][A][B];
+          for (unsigned int j = 0; j < 3; ++j)
+            h[j][p] = 0.;
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = 0; j < 3; ++j)
+              h[j][p] += Psi.dd[i][j] * g[i][p];
+        }
+      for (unsigned int p = 0; p < 6; ++p)
+        for (unsigned int q = p; q < 6; ++q)
           {
-            const double gAB[3] = {G[0][A][B], G[1][A][B], G[2][A][B]};
-            double       hAB[3] = {0., 0., 0.}; // sum_i Psi_ij G_i,AB
-            for (unsigned int i = 0; i < 3; ++i)
-              for (unsigned int j = 0; j < 3; ++j)
-                hAB[j] += D.dd[i][j] * gAB[i];
-            for (unsigned int K = 0; K < 3; ++K)
-              for (unsigned int L = K; L < 3; ++L)
-                {
-                  const double sym_I =
-                    0.5 * ((A == K) * (B == L) + (A == L) * (B == K));
-                  T[A][B][K][L] =
-                    4. * (hAB[0] * G[0][K][L] + hAB[1] * G[1][K][L] +
-                          hAB[2] * G[2][K][L] +
-                          D.d[1] * ((A == B) * (K == L) - sym_I) +
-                          c3 * (C_inv[A][B] * C_inv[K][L] -
-                                0.5 * (C_inv[A][K] * C_inv[B][L] +
-                                       C_inv[A][L] * C_inv[B][K])));
-                }
+            const unsigned int A = index[p][0], B = index[p][1];
+            const unsigned int K = index[q][0], L = index[q][1];
+            // I (x) I - II: 1 - 1 = 0 on the normal diagonal, 1 between two
+            // normal entries, -1/2 on the shear diagonal
+            const double sym_I = p == q ? (p < 3 ? 1. : 0.5) : 0.;
+            D[p][q] = D[q][p] =
+              4. * (h[0][p] * g[0][q] + h[1][p] * g[1][q] + h[2][p] * g[2][q] +
+                    Psi.d[1] * ((A == B) * (K == L) - sym_I) +
+                    c3 * (C_inv[A][B] * C_inv[K][L] -
+                          0.5 * (C_inv[A][K] * C_inv[B][L] +
+                                 C_inv[A][L] * C_inv[B][K])));
           }
     }
   } // namespace Materials

@@ -34,7 +34,7 @@ namespace TissueContact
       stress_C(const SymmetricTensor<2, 3> &C,
                const Point<3>              &X,
                SymmetricTensor<2, 3>       &S,
-               SymmetricTensor<4, 3>       *CC) const override;
+               VoigtTangent                *CC) const override;
       std::pair<double, double>
       lame_equivalents() const override
       {

@@ -51,7 +51,7 @@ namespace TissueContact
       stress_C(const SymmetricTensor<2, 3> &C,
                const Point<3>              &X,
                SymmetricTensor<2, 3>       &S,
-               SymmetricTensor<4, 3>       *CC) const override;
+               VoigtTangent                *CC) const override;
       /** The ground material's equivalents (the fibers add anisotropic
        * stiffness @f$4\alpha_f\beta_f^2@f$ along @f$f\otimes f\otimes f
        * \otimes f@f$ only). */

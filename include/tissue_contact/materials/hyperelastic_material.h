@@ -1,6 +1,7 @@
 #pragma once
 
 #include <tissue_contact/materials/material.h>
+#include <tissue_contact/materials/voigt_tangent.h>
 
 namespace TissueContact
 {
@@ -22,12 +23,13 @@ namespace TissueContact
       virtual double
       energy_C(const SymmetricTensor<2, 3> &C, const Point<3> &X) const = 0;
 
-      /** @f$S(C)@f$, and @f$\mathbb{C}(C)@f$ when @p CC is not null. */
+      /** @f$S(C)@f$, and @f$\mathbb{C}(C)@f$ in Voigt form when @p CC is
+       * not null (every entry of CC->D is set). */
       virtual void
       stress_C(const SymmetricTensor<2, 3> &C,
                const Point<3>              &X,
                SymmetricTensor<2, 3>       &S,
-               SymmetricTensor<4, 3>       *CC) const = 0;
+               VoigtTangent                *CC) const = 0;
 
       double
       energy(const Tensor<2, 3> &F, const Point<3> &X) const override;
