@@ -20,6 +20,8 @@ namespace TissueContact
   {
     namespace
     {
+      using Materials::VoigtTangent;
+
       /** Per-thread work space of the cell kernel. */
       struct ScratchData
       {
@@ -29,6 +31,10 @@ namespace TissueContact
         std::vector<Tensor<1, 3>>           Sg;
         // dv_e/dx_a of the mean dilatation (doc/theory/09, (D2))
         std::vector<Tensor<1, 3>> dv;
+        // the material's response at a point (each evaluation sets what
+        // the kernel reads: kept here, not zeroed for every cell)
+        Materials::MaterialResponse m;
+        VoigtTangent                CC;
       };
 
       struct CopyData
@@ -38,8 +44,6 @@ namespace TissueContact
         unsigned int       cell  = 0;
         bool               valid = true;
       };
-
-      using Materials::VoigtTangent;
 
       /**
        * Add the element terms of a pressure @f$\bar p@f$ constant over the
@@ -73,6 +77,19 @@ namespace TissueContact
             }
       }
 
+      /**
+       * The values of @p K as one array in the order of its sparsity
+       * pattern, which the positions of use_matrix_pattern() index:
+       * SparseMatrix stores them so, the first being the first stored entry
+       * of the first row.
+       */
+      double *
+      value_array(SparseMatrix<double> &K)
+      {
+        const auto first = K.get_sparsity_pattern().begin();
+        AssertThrow(first->global_index() == 0, ExcInternalError());
+        return &K(first->row(), first->column());
+      }
     } // namespace
 
 
@@ -410,9 +427,9 @@ namespace TissueContact
 
           const Materials::Material             *material = cell_material[c];
           const Materials::HyperelasticMaterial *hyper = cell_hyperelastic[c];
-          Materials::MaterialResponse            m;
+          Materials::MaterialResponse           &m = s.m;
           SymmetricTensor<2, 3>                  S;
-          VoigtTangent                           CC;
+          VoigtTangent                          &CC = s.CC;
 
           if (!single_rotation_index.empty() && single_rotation_index[c] >= 0)
             {
@@ -621,9 +638,10 @@ namespace TissueContact
           {
             const unsigned int *at =
               &positions[std::size_t(copy.cell) * n_local * n_local];
-            const double *k = &copy.K(0, 0);
+            double       *values = value_array(*K);
+            const double *k      = &copy.K(0, 0);
             for (unsigned int ij = 0; ij < n_local * n_local; ++ij)
-              SparseMatrix<double>::iterator(K, at[ij])->value() += k[ij];
+              values[at[ij]] += k[ij];
           }
         else if (K != nullptr)
           {
