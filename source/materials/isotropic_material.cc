@@ -48,7 +48,11 @@ namespace TissueContact
       const auto  &index = VoigtTangent::index;
       auto        &D     = CC->D;
       const double c3    = Psi.d[2] * I.I3;
-      double       g[3][6], h[3][6]; // h_j,p = sum_i Psi_ij G_i,p
+      double       Ci[3][3]; // C^-1 as a plain array (cheap to index)
+      for (unsigned int A = 0; A < 3; ++A)
+        for (unsigned int B = 0; B < 3; ++B)
+          Ci[A][B] = C_inv[A][B];
+      double g[3][6], h[3][6]; // h_j,p = sum_i Psi_ij G_i,p
       for (unsigned int p = 0; p < 6; ++p)
         {
           const unsigned int A = index[p][0], B = index[p][1];
@@ -60,20 +64,24 @@ namespace TissueContact
             for (unsigned int j = 0; j < 3; ++j)
               h[j][p] += Psi.dd[i][j] * g[i][p];
         }
+      // (I (x) I - II)_pq: 1 - 1 = 0 on the normal diagonal, 1 between two
+      // normal entries, -1/2 on the shear diagonal, 0 elsewhere
+      static constexpr double I_I[6][6] = {{0., 1., 1., 0., 0., 0.},
+                                           {1., 0., 1., 0., 0., 0.},
+                                           {1., 1., 0., 0., 0., 0.},
+                                           {0., 0., 0., -0.5, 0., 0.},
+                                           {0., 0., 0., 0., -0.5, 0.},
+                                           {0., 0., 0., 0., 0., -0.5}};
       for (unsigned int p = 0; p < 6; ++p)
         for (unsigned int q = p; q < 6; ++q)
           {
             const unsigned int A = index[p][0], B = index[p][1];
             const unsigned int K = index[q][0], L = index[q][1];
-            // I (x) I - II: 1 - 1 = 0 on the normal diagonal, 1 between two
-            // normal entries, -1/2 on the shear diagonal
-            const double sym_I = p == q ? (p < 3 ? 1. : 0.5) : 0.;
             D[p][q] = D[q][p] =
               4. * (h[0][p] * g[0][q] + h[1][p] * g[1][q] + h[2][p] * g[2][q] +
-                    Psi.d[1] * ((A == B) * (K == L) - sym_I) +
-                    c3 * (C_inv[A][B] * C_inv[K][L] -
-                          0.5 * (C_inv[A][K] * C_inv[B][L] +
-                                 C_inv[A][L] * C_inv[B][K])));
+                    Psi.d[1] * I_I[p][q] +
+                    c3 * (Ci[A][B] * Ci[K][L] -
+                          0.5 * (Ci[A][K] * Ci[B][L] + Ci[A][L] * Ci[B][K])));
           }
     }
   } // namespace Materials
