@@ -108,6 +108,11 @@ namespace TissueContact
         {
           local_component.push_back(disc.fe.system_to_component_index(k).first);
           local_node.push_back(disc.fe.system_to_component_index(k).second);
+          // the kernels index the element matrix node by node: local dof
+          // 3 a + i is component i of node a, as FESystem numbers one base
+          // element of multiplicity 3
+          AssertThrow(local_component[k] == k % 3 && local_node[k] == k / 3,
+                      ExcInternalError());
         }
 
       // reference geometry of every cell, and f_ext = int rho0 g N dV +
@@ -406,11 +411,6 @@ namespace TissueContact
             dv.resize(nodal->n_elements());
         }
 
-      // local index of (node a, component i)
-      std::vector<unsigned int> local_index(n_nodes * 3);
-      for (unsigned int k = 0; k < n_local; ++k)
-        local_index[local_node[k] * 3 + local_component[k]] = k;
-
       const auto worker =
         [&](const std::vector<unsigned int>::const_iterator &it,
             ScratchData                                     &s,
@@ -421,6 +421,9 @@ namespace TissueContact
           copy.r.reinit(n_local);
           if (K != nullptr)
             copy.K.reinit(n_local, n_local);
+          // the element matrix, row by row (local dof 3 a + i: node a,
+          // component i)
+          double *const Kc = K != nullptr ? &copy.K(0, 0) : nullptr;
           s.B.resize(n_nodes);
           s.DB.resize(n_nodes);
           s.Sg.resize(n_nodes);
@@ -452,11 +455,10 @@ namespace TissueContact
                 }
               for (unsigned int p = 0; p < n_local; ++p)
                 {
-                  const unsigned int i = local_index[p];
-                  copy.r[i]            = r[p];
+                  copy.r[p] = r[p];
                   if (K != nullptr)
                     for (unsigned int q = 0; q < n_local; ++q)
-                      copy.K(i, local_index[q]) = H[p * n_local + q];
+                      copy.K(p, q) = H[p * n_local + q];
                 }
               return;
             }
@@ -558,29 +560,43 @@ namespace TissueContact
                           b[4 * 3 + i] = F[i][0] * ga[2] + F[i][2] * ga[0];
                           b[5 * 3 + i] = F[i][0] * ga[1] + F[i][1] * ga[0];
                         }
+                      // the three columns of D B_a side by side
                       for (unsigned int p = 0; p < 6; ++p)
-                        for (unsigned int i = 0; i < 3; ++i)
-                          {
-                            double v = 0.;
-                            for (unsigned int r = 0; r < 6; ++r)
-                              v += D[p][r] * b[r * 3 + i];
-                            s.DB[a][p * 3 + i] = v;
-                          }
+                        {
+                          double v0 = 0., v1 = 0., v2 = 0.;
+                          for (unsigned int r = 0; r < 6; ++r)
+                            {
+                              v0 += D[p][r] * b[r * 3 + 0];
+                              v1 += D[p][r] * b[r * 3 + 1];
+                              v2 += D[p][r] * b[r * 3 + 2];
+                            }
+                          s.DB[a][p * 3 + 0] = v0;
+                          s.DB[a][p * 3 + 1] = v1;
+                          s.DB[a][p * 3 + 2] = v2;
+                        }
                       s.Sg[a] = S * ga;
                     }
                   for (unsigned int a = 0; a < n_nodes; ++a)
                     for (unsigned int b = a; b < n_nodes; ++b)
                       {
-                        const double geo = g[a] * s.Sg[b];
+                        const double  geo = g[a] * s.Sg[b];
+                        const double *Ba = s.B[a].data(), *DBb = s.DB[b].data();
                         for (unsigned int i = 0; i < 3; ++i)
-                          for (unsigned int k = 0; k < 3; ++k)
-                            {
-                              double v = (i == k ? geo : 0.);
-                              for (unsigned int p = 0; p < 6; ++p)
-                                v += s.B[a][p * 3 + i] * s.DB[b][p * 3 + k];
-                              copy.K(local_index[a * 3 + i],
-                                     local_index[b * 3 + k]) += v * w;
-                            }
+                          {
+                            double *row = &Kc[(a * 3 + i) * n_local + b * 3];
+                            double  v0 = (i == 0 ? geo : 0.),
+                                   v1 = (i == 1 ? geo : 0.),
+                                   v2 = (i == 2 ? geo : 0.);
+                            for (unsigned int p = 0; p < 6; ++p)
+                              {
+                                v0 += Ba[p * 3 + i] * DBb[p * 3 + 0];
+                                v1 += Ba[p * 3 + i] * DBb[p * 3 + 1];
+                                v2 += Ba[p * 3 + i] * DBb[p * 3 + 2];
+                              }
+                            row[0] += v0 * w;
+                            row[1] += v1 * w;
+                            row[2] += v2 * w;
+                          }
                       }
                 }
               else
@@ -595,8 +611,7 @@ namespace TissueContact
                             for (unsigned int J = 0; J < 3; ++J)
                               for (unsigned int L = 0; L < 3; ++L)
                                 v += g[a][J] * m.A[i][J][k][L] * g[b][L];
-                            copy.K(local_index[a * 3 + i],
-                                   local_index[b * 3 + k]) += v * w;
+                            copy.K(a * 3 + i, b * 3 + k) += v * w;
                           }
                 }
             }
@@ -606,8 +621,7 @@ namespace TissueContact
               for (unsigned int b = a + 1; b < n_nodes; ++b)
                 for (unsigned int i = 0; i < 3; ++i)
                   for (unsigned int k = 0; k < 3; ++k)
-                    copy.K(local_index[b * 3 + k], local_index[a * 3 + i]) =
-                      copy.K(local_index[a * 3 + i], local_index[b * 3 + k]);
+                    copy.K(b * 3 + k, a * 3 + i) = copy.K(a * 3 + i, b * 3 + k);
           if (K != nullptr && kappa_e > 0.)
             // U''(J_bar) / V_e dv_e/dx_a (x) dv_e/dx_b   (D4)
             for (unsigned int a = 0; a < n_nodes; ++a)
@@ -616,7 +630,7 @@ namespace TissueContact
                   const double da = ddU_V * s.dv[a][i];
                   for (unsigned int b = 0; b < n_nodes; ++b)
                     for (unsigned int k = 0; k < 3; ++k)
-                      copy.K(local_index[a * 3 + i], local_index[b * 3 + k]) +=
+                      copy.K(a * 3 + i, b * 3 + k) +=
                         da * s.dv[b][k];
                 }
         };
