@@ -638,6 +638,7 @@ namespace TissueContact
       const bool by_position =
         K != nullptr && &K->get_sparsity_pattern() == positions_pattern &&
         K->n_nonzero_elements() == positions_entries;
+      double *const values = by_position ? value_array(*K) : nullptr;
       std::vector<double> row(n_local);
       const auto          copier = [&](const CopyData &copy) {
         if (!copy.valid)
@@ -652,7 +653,6 @@ namespace TissueContact
           {
             const unsigned int *at =
               &positions[std::size_t(copy.cell) * n_local * n_local];
-            double       *values = value_array(*K);
             const double *k      = &copy.K(0, 0);
             for (unsigned int ij = 0; ij < n_local * n_local; ++ij)
               values[at[ij]] += k[ij];
