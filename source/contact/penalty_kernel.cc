@@ -99,10 +99,9 @@ namespace TissueContact
           }
       }
 
-      /** H = H + M + M^T, M (the half convention of the functions above)
-       * reset to zero */
+      /** H = H + M + M^T, M in the half convention of the functions above */
       void
-      add_symmetrized(Mat &H, Mat &M)
+      add_symmetrized(Mat &H, const Mat &M)
       {
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = i; j < n; ++j)
@@ -112,8 +111,6 @@ namespace TissueContact
               if (j != i)
                 H[j][i] += v;
             }
-        for (auto &row : M)
-          row.fill(0.);
       }
 
       /** The nonzero entries of a 21-vector that is zero outside a few of
@@ -688,13 +685,15 @@ namespace TissueContact
         for (unsigned int l = 0; l < q; ++l)
           if (Zc[l] != nullptr)
             {
-              const Vec &z = *Zc[l];
+              // z is zero outside its support
+              const Vec     &z  = *Zc[l];
+              const Support &sz = Zs[l];
               for (unsigned int j = 0; j < q; ++j)
                 {
                   const double c = 0.5 * Hz[n + j][n + l];
                   if (c != 0.)
-                    for (unsigned int i = 0; i < n; ++i)
-                      Ut[j][i] += c * z[i];
+                    for (unsigned int p = 0; p < sz.size; ++p)
+                      Ut[j][sz.i[p]] += c * z[sz.i[p]];
                 }
             }
         Mat Mh;
