@@ -71,9 +71,8 @@ namespace TissueContact
             {
               const unsigned int I = voigt[a][0], J = voigt[a][1];
               const unsigned int K = voigt[b][0], L = voigt[b][1];
-              CC->D[a][b] +=
-                pJ * (Ci[I][J] * Ci[K][L] - Ci[I][K] * Ci[J][L] -
-                      Ci[I][L] * Ci[J][K]);
+              CC->D[a][b] += pJ * (Ci[I][J] * Ci[K][L] - Ci[I][K] * Ci[J][L] -
+                                   Ci[I][L] * Ci[J][K]);
             }
       }
 
@@ -430,7 +429,7 @@ namespace TissueContact
 
           const Materials::Material             *material = cell_material[c];
           const Materials::HyperelasticMaterial *hyper = cell_hyperelastic[c];
-          Materials::MaterialResponse           &m = s.m;
+          Materials::MaterialResponse           &m     = s.m;
           SymmetricTensor<2, 3>                  S;
           VoigtTangent                          &CC = s.CC;
 
@@ -584,9 +583,9 @@ namespace TissueContact
                         for (unsigned int i = 0; i < 3; ++i)
                           {
                             double *row = &Kc[(a * 3 + i) * n_local + b * 3];
-                            double  v0 = (i == 0 ? geo : 0.),
-                                   v1 = (i == 1 ? geo : 0.),
-                                   v2 = (i == 2 ? geo : 0.);
+                            double  v0  = (i == 0 ? geo : 0.),
+                                   v1   = (i == 1 ? geo : 0.),
+                                   v2   = (i == 2 ? geo : 0.);
                             for (unsigned int p = 0; p < 6; ++p)
                               {
                                 v0 += Ba[p * 3 + i] * DBb[p * 3 + 0];
@@ -630,15 +629,14 @@ namespace TissueContact
                   const double da = ddU_V * s.dv[a][i];
                   for (unsigned int b = 0; b < n_nodes; ++b)
                     for (unsigned int k = 0; k < 3; ++k)
-                      copy.K(a * 3 + i, b * 3 + k) +=
-                        da * s.dv[b][k];
+                      copy.K(a * 3 + i, b * 3 + k) += da * s.dv[b][k];
                 }
         };
 
       const bool by_position =
         K != nullptr && &K->get_sparsity_pattern() == positions_pattern &&
         K->n_nonzero_elements() == positions_entries;
-      double *const values = by_position ? value_array(*K) : nullptr;
+      double *const       values = by_position ? value_array(*K) : nullptr;
       std::vector<double> row(n_local);
       const auto          copier = [&](const CopyData &copy) {
         if (!copy.valid)
@@ -653,7 +651,7 @@ namespace TissueContact
           {
             const unsigned int *at =
               &positions[std::size_t(copy.cell) * n_local * n_local];
-            const double *k      = &copy.K(0, 0);
+            const double *k = &copy.K(0, 0);
             for (unsigned int ij = 0; ij < n_local * n_local; ++ij)
               values[at[ij]] += k[ij];
           }
@@ -905,8 +903,8 @@ namespace TissueContact
           out.strain_energy_density[c] = psi / volume;
           sigma /= volume;
           for (unsigned int i = 0; i < 6; ++i)
-            out.cauchy_stress[i][c] = sigma[VoigtTangent::index[i][0]]
-                                           [VoigtTangent::index[i][1]];
+            out.cauchy_stress[i][c] =
+              sigma[VoigtTangent::index[i][0]][VoigtTangent::index[i][1]];
           const Tensor<2, 3> dev =
             sigma - trace(sigma) / 3. * unit_symmetric_tensor<3>();
           out.von_mises[c] = std::sqrt(1.5 * scalar_product(dev, dev));

@@ -41,11 +41,8 @@ namespace TissueContact
       VoigtTangent                CC;
       stress_C(C, X, S, &CC);
       response.psi = energy_C(C, X);
-      push_forward_tangent(F,
-                           static_cast<Tensor<2, 3>>(S),
-                           CC.tensor(),
-                           response.P,
-                           response.A);
+      push_forward_tangent(
+        F, static_cast<Tensor<2, 3>>(S), CC.tensor(), response.P, response.A);
     }
   } // namespace Materials
 } // namespace TissueContact
