@@ -697,9 +697,7 @@ namespace TissueContact
                       Ut[j][sz.i[p]] += c * z[sz.i[p]];
                 }
             }
-        Mat Mh;
-        for (auto &row : Mh)
-          row.fill(0.);
+        Mat Mh{}; // zero (one block)
         for (unsigned int j = 0; j < q; ++j)
           if (Zc[j] != nullptr)
             {
@@ -869,8 +867,7 @@ namespace TissueContact
 
       // c (S Hess A + grad A (x) grad S + grad S (x) grad A + A Hess S)
       Mat &H = result.hessian;
-      for (auto &row : H)
-        row.fill(0.);
+      H      = Mat{};
       {
         // Hess |N_T| = M^T (I - nu nu^T) M / |N_T| + bilinear part of N_T
         // weighted by nu; A = |N_T| / 2
@@ -893,9 +890,7 @@ namespace TissueContact
             }
       }
       // the symmetric terms, half of each in Mh (H += Mh + Mh^T below)
-      Mat Mh;
-      for (auto &row : Mh)
-        row.fill(0.);
+      Mat Mh{};
       add_symmetric_outer(Mh, grad_A, grad_S, c);
       // Hess S = sum_k 2 (grad G_k (x) grad G_k + G_k Hess G_k)
       for (unsigned int k = 0; k < 3; ++k)
