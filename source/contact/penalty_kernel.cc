@@ -686,15 +686,13 @@ namespace TissueContact
         for (unsigned int l = 0; l < q; ++l)
           if (Zc[l] != nullptr)
             {
-              // z is zero outside its support
-              const Vec     &z  = *Zc[l];
-              const Support &sz = Zs[l];
+              const Vec &z = *Zc[l];
               for (unsigned int j = 0; j < q; ++j)
                 {
                   const double c = 0.5 * Hz[n + j][n + l];
                   if (c != 0.)
-                    for (unsigned int p = 0; p < sz.size; ++p)
-                      Ut[j][sz.i[p]] += c * z[sz.i[p]];
+                    for (unsigned int i = 0; i < n; ++i)
+                      Ut[j][i] += c * z[i];
                 }
             }
         Mat Mh{}; // zero (one block)

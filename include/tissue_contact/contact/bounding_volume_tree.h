@@ -3,7 +3,6 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/exceptions.h>
 
-#include <algorithm>
 #include <array>
 #include <functional>
 #include <limits>
