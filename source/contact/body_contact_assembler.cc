@@ -50,6 +50,10 @@ namespace TissueContact
                             cell->vertex_index(2),
                             cell->vertex_index(3)});
             tet_body.push_back(body(cell->material_id()));
+            tet_has_depth.push_back(
+              std::any_of(tets.back().begin(),
+                          tets.back().end(),
+                          [&](const unsigned int v) { return depth[v] > 0.; }));
             for (const unsigned int v : tets.back())
               AssertThrow(std::isfinite(depth[v]),
                           ExcMessage("Contact: body with material id " +
@@ -173,6 +177,12 @@ namespace TissueContact
       if (margin > 0.)
         box.extend(margin);
       tree->for_each_overlap(box, [&](const unsigned int k) {
+        // a tetrahedron whose vertices all lie on contact surfaces (depth 0)
+        // has no material depth to push with: no pair with it has energy
+        // (rejected() says so first), and in thin layers such tetrahedra
+        // are half the candidates (doc/theory/05-contact.md, sec. 2.1)
+        if (!tet_has_depth[k])
+          return;
         const auto &kv = tets[k];
         // a triangle that is a face of the tetrahedron
         unsigned int shared = 0;

@@ -141,12 +141,13 @@ namespace TissueContact
                        PairKernel &);
       };
 
-      const ContactSurface                       &surface;
-      std::vector<BodyContact>                    pairs;
-      std::vector<Method>                         methods; // per pair
-      std::vector<double>                         depth;   // per vertex
-      std::vector<std::array<unsigned int, 4>>    tets;    // vertex indices
-      std::vector<types::material_id>             tet_body;
+      const ContactSurface                    &surface;
+      std::vector<BodyContact>                 pairs;
+      std::vector<Method>                      methods; // per pair
+      std::vector<double>                      depth;   // per vertex
+      std::vector<std::array<unsigned int, 4>> tets;    // vertex indices
+      std::vector<types::material_id>          tet_body;
+      std::vector<bool> tet_has_depth; // a vertex of positive depth
       mutable std::unique_ptr<BoundingVolumeTree> tree; // over tets
       mutable unsigned int                        n_rebuilds = 0;
       mutable std::vector<Point<3>> x_at_build; // positions at the build
