@@ -179,8 +179,9 @@ namespace TissueContact
       tree->for_each_overlap(box, [&](const unsigned int k) {
         // a tetrahedron whose vertices all lie on contact surfaces (depth 0)
         // has no material depth to push with: no pair with it has energy
-        // (rejected() says so first), and in thin layers such tetrahedra
-        // are half the candidates (doc/theory/05-contact.md, sec. 2.1)
+        // (rejected() says so first), and in the thin layers of the knee
+        // such tetrahedra were half the candidates (doc/theory/05-contact.md,
+        // sec. 2.2)
         if (!tet_has_depth[k])
           return;
         const auto &kv = tets[k];
