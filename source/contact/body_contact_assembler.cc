@@ -178,10 +178,9 @@ namespace TissueContact
         box.extend(margin);
       tree->for_each_overlap(box, [&](const unsigned int k) {
         // a tetrahedron whose vertices all lie on contact surfaces (depth 0)
-        // has no material depth to push with: no pair with it has energy
-        // (rejected() says so first), and in the thin layers of the knee
-        // such tetrahedra were half the candidates (doc/theory/05-contact.md,
-        // sec. 2.2)
+        // has no material depth to push with: no pair with it has energy,
+        // and in the thin layers of the knee such tetrahedra were half the
+        // candidates (doc/theory/05-contact.md, sec. 2.2)
         if (!tet_has_depth[k])
           return;
         const auto &kv = tets[k];
@@ -217,9 +216,9 @@ namespace TissueContact
                                    const unsigned int  k,
                                    const PairGeometry &geometry) const
     {
+      // (a tetrahedron of zero depth at all four vertices never gets here:
+      // for_each_candidate_of() drops it)
       const auto &[tet, tri, g] = geometry;
-      if (*std::max_element(g.begin(), g.end()) <= 0.)
-        return true;
       // the boxes of triangle and tetrahedron apart by more than 1e-6 of the
       // tetrahedron's size: the clipping could not find a point within
       // roundoff of both, so the pair has no intersection. Cheaper than the

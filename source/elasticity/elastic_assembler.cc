@@ -727,9 +727,12 @@ namespace TissueContact
               for (unsigned int i = 0; i < n_local; ++i)
                 for (unsigned int j = 0; j < n_local; ++j)
                   {
-                    at[i * n_local + j] = pattern(dofs[i], dofs[j]);
-                    if (at[i * n_local + j] == SparsityPattern::invalid_entry)
+                    // compared before narrowing to the stored 32 bits, where
+                    // invalid_entry would no longer read as itself
+                    const std::size_t p = pattern(dofs[i], dofs[j]);
+                    if (p == SparsityPattern::invalid_entry)
                       all_found = false;
+                    at[i * n_local + j] = p;
                   }
             }
         },

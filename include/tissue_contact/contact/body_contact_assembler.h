@@ -253,9 +253,10 @@ namespace TissueContact
 
       /** Whether the pair (triangle t, tetrahedron k) at @p geometry
        * certainly has zero energy near this position, tested before the
-       * clipping (doc/theory/05-contact.md, sec. 5): the depth is zero at
-       * all four vertices of the tetrahedron, or a face plane of the
-       * tetrahedron separates the triangle from it (every vertex of the
+       * clipping (doc/theory/05-contact.md, sec. 2.2), for a candidate of
+       * for_each_candidate_of() (which has dropped the tetrahedra of zero
+       * depth at all four vertices): the boxes are apart, or a face plane of
+       * the tetrahedron separates the triangle from it (every vertex of the
        * triangle is outside by more than 1e-6 in barycentric
        * coordinates, or is a vertex of the tetrahedron on that face: the
        * triangle then touches the tetrahedron in a point or an edge of
