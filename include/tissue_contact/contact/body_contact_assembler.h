@@ -191,7 +191,11 @@ namespace TissueContact
       /** WorkStream over the surface triangles: @p worker(i, copy) for
        * surface_triangles[i] in parallel, @p copier(copy) serially in the
        * triangles' order (sums are those of a serial loop); @p sample is
-       * the initial copy data. */
+       * the initial copy data. Chunks of 32 triangles, four per thread in
+       * flight: most triangles have few candidates, and with chunks of 8
+       * and one per thread the pipeline's own hand-overs and a thread
+       * waiting for the in-order copier took a sixth of the contact
+       * evaluations on two threads (doc/theory/05-contact.md, sec. 7). */
       template <typename Worker, typename Copier, typename Copy>
       void
       per_surface_triangle(const Worker &worker,
@@ -212,8 +216,8 @@ namespace TissueContact
           copier,
           Scratch(),
           sample,
-          MultithreadInfo::n_threads(),
-          8);
+          4 * MultithreadInfo::n_threads(),
+          32);
       }
 
       /** Call @p f(t, k, pair) for every candidate of surface_triangles[i]
