@@ -193,9 +193,9 @@ namespace TissueContact
        * triangles' order (sums are those of a serial loop); @p sample is
        * the initial copy data. Chunks of 32 triangles, four per thread in
        * flight: most triangles have few candidates, and with chunks of 8
-       * and one per thread the pipeline's own hand-overs and a thread
-       * waiting for the in-order copier took a sixth of the contact
-       * evaluations on two threads (doc/theory/05-contact.md, sec. 7). */
+       * and one per thread in flight the coarse knee's residual + tangent
+       * took 13-20 % longer on two threads, its energies 10-13 %
+       * (doc/theory/05-contact.md, sec. 7). */
       template <typename Worker, typename Copier, typename Copy>
       void
       per_surface_triangle(const Worker &worker,
