@@ -194,7 +194,7 @@ namespace TissueContact
        * the initial copy data. Chunks of 32 triangles, four per thread in
        * flight: most triangles have few candidates, and with chunks of 8
        * and one per thread in flight the coarse knee's residual + tangent
-       * took 13-20 % longer on two threads, its energies 10-13 %
+       * took 14-25 % longer on two threads than now, its energies 11-15 %
        * (doc/theory/05-contact.md, sec. 7). */
       template <typename Worker, typename Copier, typename Copy>
       void
