@@ -143,7 +143,7 @@ namespace TissueContact
     LinearSolver::solve_amg(const SparseMatrix<double> &K,
                             Vector<double>             &x,
                             const Vector<double>       &b,
-                            const double                relative_tolerance,
+                            const double                target,
                             bool                       &converged) const
     {
       // a hierarchy of a matrix of another size (another problem) is no
@@ -179,8 +179,25 @@ namespace TissueContact
               amg->initialize(amg_matrix, ml);
             }
         }
-      ReductionControl control(
-        parameters.max_iterations, 1e-300, relative_tolerance, false, false);
+      // the residual to start from: |b| for x = 0, else that of the iterate
+      // a drifted hierarchy left (below)
+      Vector<double> r(b.size());
+      const double   r0 = x.l2_norm() == 0. ? b.l2_norm() : K.residual(r, x, b);
+      // iterations per decade of residual: the hierarchy's quality, whatever
+      // the tolerance
+      const double decades =
+        std::max(1., std::log10(std::max(r0 / target, 1.)));
+      // a kept hierarchy gets twice the iterations the fresh one needed for
+      // as many decades, plus 20: past that the matrix has drifted from it,
+      // and a new one (its setup costs about 15 iterations on the full knee)
+      // is cheaper than going on to the cap, which such solves reached
+      // (doc/theory/04-solver.md sec. 4.5.1)
+      const unsigned int budget =
+        fresh ?
+          parameters.max_iterations :
+          std::min<unsigned int>(parameters.max_iterations,
+                                 std::ceil(2. * fresh_rate * decades) + 20);
+      SolverControl control(budget, target, false, false);
       SolverGMRES<Vector<double>>::AdditionalData data;
       data.max_n_tmp_vectors = 52;
       // right preconditioning: GMRES then minimizes and stops on the true
@@ -190,7 +207,6 @@ namespace TissueContact
       // residual did not fall at all
       data.right_preconditioning = true;
       SolverGMRES<Vector<double>> gmres(control, data);
-      x         = 0.;
       converged = true;
       try
         {
@@ -200,21 +216,25 @@ namespace TissueContact
         {
           converged = false;
         }
-      // iterations per decade of residual: the hierarchy's quality, whatever
-      // the tolerance
-      const double decades =
-        std::max(1., -std::log10(std::max(relative_tolerance, 1e-300)));
       const double rate = control.last_step() / decades;
       if (fresh)
-        fresh_rate = rate;
+        {
+          fresh_rate = rate;
+          // a hierarchy that did not bring its own tangent to the target (an
+          // indefinite one) is not kept: with its rate as the yardstick, the
+          // next solves would have run to the cap with it
+          if (!converged)
+            amg.reset();
+        }
       else if (!converged || rate > 1.5 * fresh_rate + 1.)
         {
-          // the matrix has drifted from the hierarchy's: a new one, now if
-          // this solve failed, else for the next solve
+          // the matrix has drifted from the hierarchy's: a new one, now
+          // (going on from the iterate reached) if this solve stopped at
+          // its budget, else for the next solve
           const unsigned int spent = control.last_step();
           amg.reset();
           if (!converged)
-            return spent + solve_amg(K, x, b, relative_tolerance, converged);
+            return spent + solve_amg(K, x, b, target, converged);
         }
       if (!parameters.reuse_preconditioner)
         amg.reset();
@@ -241,7 +261,7 @@ namespace TissueContact
       else if (type == "GMRES+AMG")
         {
           bool converged;
-          iterations = solve_amg(K, x, b, tolerance, converged);
+          iterations = solve_amg(K, x, b, tolerance * b.l2_norm(), converged);
           // inexact Newton: the iterate after the cap is used as is, unless
           // the type was chosen automatically: then a system that a fresh
           // hierarchy did not solve either (an indefinite tangent) gets an

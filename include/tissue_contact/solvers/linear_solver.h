@@ -128,8 +128,10 @@ namespace TissueContact
        * if the result is not finite. With Reuse preconditioner, the AMG
        * hierarchy of an earlier solve is kept while it converges no more
        * than 1.5 times slower (iterations per decade of residual) than it
-       * did when it was built, and rebuilt at once if GMRES reaches its
-       * cap with it. The hierarchy keeps its own copy of the matrix it was
+       * did when it was built, and rebuilt at once, GMRES going on from
+       * the iterate reached, if a solve with it takes more than twice the
+       * iterations of the fresh one for as many decades, plus 20. The hierarchy
+       * keeps its own copy of the matrix it was
        * built from, so it stays a valid preconditioner when @p K is a later
        * tangent, also one with more contact couplings in its pattern: only
        * the convergence rate decides when it is replaced. */
@@ -179,12 +181,13 @@ namespace TissueContact
       std::vector<double> null_space;
       unsigned int        null_space_dimension;
 
-      /** GMRES with AMG; builds the hierarchy if there is none. */
+      /** GMRES with AMG from the iterate @p x to the residual @p target
+       * (absolute); builds the hierarchy if there is none. */
       unsigned int
       solve_amg(const SparseMatrix<double> &K,
                 Vector<double>             &x,
                 const Vector<double>       &b,
-                const double                relative_tolerance,
+                const double                target,
                 bool                       &converged) const;
 
       mutable std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
