@@ -130,9 +130,10 @@ namespace TissueContact
        * than 1.5 times slower (iterations per decade of residual) than it
        * did when it was built, and rebuilt at once, GMRES going on from
        * the iterate reached, if a solve with it takes more than twice the
-       * iterations of the fresh one for as many decades, plus 20. The hierarchy
-       * keeps its own copy of the matrix it was
-       * built from, so it stays a valid preconditioner when @p K is a later
+       * iterations of the fresh one for as many decades, plus 20; a fresh
+       * hierarchy with which GMRES reaches its cap is not kept. The
+       * hierarchy keeps its own copy of the matrix it was built from, so
+       * it stays a valid preconditioner when @p K is a later
        * tangent, also one with more contact couplings in its pattern: only
        * the convergence rate decides when it is replaced. */
       unsigned int
