@@ -181,8 +181,12 @@ namespace TissueContact
         }
       // the residual to start from: |b| for x = 0, else that of the iterate
       // a drifted hierarchy left (below)
-      Vector<double> r(b.size());
-      const double   r0 = x.l2_norm() == 0. ? b.l2_norm() : K.residual(r, x, b);
+      const double r0 = [&]() {
+        if (x.l2_norm() == 0.)
+          return b.l2_norm();
+        Vector<double> r(b.size());
+        return K.residual(r, x, b);
+      }();
       // iterations per decade of residual: the hierarchy's quality, whatever
       // the tolerance
       const double decades =

@@ -485,39 +485,35 @@ namespace
   void
   kept_hierarchy()
   {
-    const unsigned int     m = 60, n = m * m;
-    DynamicSparsityPattern dsp(n, n);
-    for (unsigned int i = 0; i < m; ++i)
-      for (unsigned int j = 0; j < m; ++j)
+    const unsigned int m = 60, n = m * m;
+    // f(row, column, value) for every entry, the x couplings scaled by ax
+    const auto for_each_entry = [&](const double ax, const auto &f) {
+      for (unsigned int k = 0; k < n; ++k)
         {
-          const unsigned int k = i * m + j;
-          dsp.add(k, k);
-          if (i > 0)
-            dsp.add(k, k - m);
-          if (i + 1 < m)
-            dsp.add(k, k + m);
+          const unsigned int j = k % m;
+          f(k, k, 2. + 2. * ax);
+          if (k >= m)
+            f(k, k - m, -1.);
+          if (k + m < n)
+            f(k, k + m, -1.);
           if (j > 0)
-            dsp.add(k, k - 1);
+            f(k, k - 1, -ax);
           if (j + 1 < m)
-            dsp.add(k, k + 1);
+            f(k, k + 1, -ax);
         }
+    };
+    DynamicSparsityPattern dsp(n, n);
+    for_each_entry(1., [&](const unsigned int k, const unsigned int l, double) {
+      dsp.add(k, l);
+    });
     SparsityPattern pattern;
     pattern.copy_from(dsp);
     const auto laplacian = [&](const double ax) {
       SparseMatrix<double> A(pattern);
-      for (unsigned int k = 0; k < n; ++k)
-        {
-          const unsigned int j = k % m;
-          A.set(k, k, 2. + 2. * ax);
-          if (k >= m)
-            A.set(k, k - m, -1.);
-          if (k + m < n)
-            A.set(k, k + m, -1.);
-          if (j > 0)
-            A.set(k, k - 1, -ax);
-          if (j + 1 < m)
-            A.set(k, k + 1, -ax);
-        }
+      for_each_entry(ax,
+                     [&](const unsigned int k,
+                         const unsigned int l,
+                         const double       v) { A.set(k, l, v); });
       return A;
     };
     const SparseMatrix<double> A1 = laplacian(1.), A2 = laplacian(1000.);
