@@ -122,6 +122,7 @@ namespace TissueContact
         std::vector<Candidate>());
       x_at_candidates = x;
       have_candidates = true;
+      have_survivors  = false;
     }
 
 
@@ -195,6 +196,63 @@ namespace TissueContact
               p.volume_body == tet_body[k])
             f(t, k, p);
       });
+    }
+
+
+    bool
+    BodyContactAssembler::begin_survivors(const std::vector<Point<3>> &x) const
+    {
+      if (have_survivors && x == x_at_survivors)
+        return true;
+      have_survivors = false;
+      survivors.resize(surface_triangles.size());
+      return false;
+    }
+
+
+    void
+    BodyContactAssembler::end_survivors(const std::vector<Point<3>> &x) const
+    {
+      if (have_survivors)
+        return;
+      x_at_survivors = x;
+      have_survivors = true;
+    }
+
+
+    template <typename F>
+    void
+    BodyContactAssembler::for_each_surviving_pair_of(
+      const unsigned int           i,
+      const std::vector<Point<3>> &x,
+      const bool                   known,
+      const F                     &f) const
+    {
+      std::vector<unsigned int> &found = survivors[i];
+      if (known)
+        {
+          for (const unsigned int c : found)
+            f(candidates[c].t,
+              candidates[c].k,
+              pairs[candidates[c].pair],
+              pair_geometry(x, candidates[c].t, candidates[c].k));
+          return;
+        }
+      found.clear();
+      for (unsigned int c = offsets[i]; c < offsets[i + 1]; ++c)
+        {
+          const PairGeometry geometry =
+            pair_geometry(x, candidates[c].t, candidates[c].k);
+          // cheap rejection before differentiating: zero energy near this
+          // position has zero gradient and Hessian
+          if (rejected(candidates[c].t, candidates[c].k, geometry))
+            continue;
+          found.push_back(c);
+          f(candidates[c].t,
+            candidates[c].k,
+            pairs[candidates[c].pair],
+            geometry);
+        }
     }
 
 
@@ -360,6 +418,7 @@ namespace TissueContact
       const std::vector<Point<3>> x = surface.positions(u);
       update_candidates(x);
       const auto scope = time_section(timer, "contact: kernels");
+      const bool known = begin_survivors(x);
       // the pairs of each contact triangle are evaluated in parallel (the
       // list is only read); f sees them serially, in the order of a serial
       // loop, so sums are reproducible
@@ -376,16 +435,14 @@ namespace TissueContact
       per_surface_triangle(
         [&](const unsigned int i, Copy &c) {
           c.n = 0;
-          for_each_listed_candidate_of(
+          for_each_surviving_pair_of(
             i,
-            [&](const unsigned int t,
-                const unsigned int k,
-                const BodyContact &p) {
-              const PairGeometry geometry = pair_geometry(x, t, k);
-              // cheap rejection before differentiating: zero energy near
-              // this position has zero gradient and Hessian
-              if (rejected(t, k, geometry))
-                return;
+            x,
+            known,
+            [&](const unsigned int  t,
+                const unsigned int  k,
+                const BodyContact  &p,
+                const PairGeometry &geometry) {
               const auto &[tet, tri, g] = geometry;
               if (c.results.size() == c.n)
                 c.results.emplace_back();
@@ -411,6 +468,7 @@ namespace TissueContact
               c.results[i].d);
         },
         Copy());
+      end_survivors(x);
     }
 
 
@@ -519,6 +577,7 @@ namespace TissueContact
       const std::vector<Point<3>> x = surface.positions(u);
       update_candidates(x);
       const auto scope = time_section(timer, "contact: sparsity check");
+      const bool known = begin_survivors(x);
       // only pairs the assembly will add (nonzero energy) need couplings;
       // add_couplings() adds whole 3 x 3 vertex blocks, so one entry per
       // vertex pair tells. The triangles in parallel.
@@ -531,15 +590,15 @@ namespace TissueContact
         [&](const unsigned int i, Has &c) {
           bool &has = c.all;
           has       = true;
-          for_each_listed_candidate_of(
+          for_each_surviving_pair_of(
             i,
-            [&](const unsigned int t,
-                const unsigned int k,
-                const BodyContact &p) {
+            x,
+            known,
+            [&](const unsigned int  t,
+                const unsigned int  k,
+                const BodyContact  &p,
+                const PairGeometry &geometry) {
               if (!has)
-                return;
-              const PairGeometry geometry = pair_geometry(x, t, k);
-              if (rejected(t, k, geometry))
                 return;
               const auto &[tet, tri, g] = geometry;
               if (!(method_of(p).energy(tet, tri, g, p.penalty) > 0.))
@@ -552,6 +611,7 @@ namespace TissueContact
         },
         [&](const Has &c) { all = all && c.all; },
         Has());
+      end_survivors(x);
       return all;
     }
 
@@ -688,20 +748,21 @@ namespace TissueContact
       const std::vector<Point<3>> x = surface.positions(u);
       update_candidates(x);
       const auto scope = time_section(timer, "contact: energy");
+      const bool known = begin_survivors(x);
       // each triangle's pair energies in parallel, added serially in the
       // list's order (the sums are those of a serial loop)
       using Energies = std::vector<std::pair<unsigned int, double>>;
       per_surface_triangle(
         [&](const unsigned int i, Energies &e) {
           e.clear();
-          for_each_listed_candidate_of(
+          for_each_surviving_pair_of(
             i,
-            [&](const unsigned int t,
-                const unsigned int k,
-                const BodyContact &p) {
-              const PairGeometry geometry = pair_geometry(x, t, k);
-              if (rejected(t, k, geometry))
-                return; // zero energy
+            x,
+            known,
+            [&](const unsigned int,
+                const unsigned int,
+                const BodyContact  &p,
+                const PairGeometry &geometry) {
               const auto &[tet, tri, g] = geometry;
               e.emplace_back(&p - pairs.data(),
                              method_of(p).energy(tet, tri, g, p.penalty));
@@ -712,6 +773,7 @@ namespace TissueContact
             W[p] += w;
         },
         Energies());
+      end_survivors(x);
       return W;
     }
   } // namespace Contact

@@ -7,9 +7,19 @@
 // bounds (the counts go to the console: they vary with the rounding), whether
 // the largest penetration stays below 10 % of the local element size, and the
 // patella's motion: it must travel down and around the condyles (its center
-// moves backwards and down, it turns with the tibia).
+// moves backwards and down, it turns with the tibia). Then, at the final
+// state, the contact assembler's reuse of the pairs that passed the
+// rejection tests (doc/theory/05-contact.md, sec. 2.1): the residual and
+// tangent after an energy at slightly different positions, and again at
+// the same positions (from the reused pairs), equal bit for bit those of a
+// pass over all candidates right after a new search; so do the energy at
+// the nearby positions, and its second evaluation.
 
 #include "scenes.h"
+
+#include <tissue_contact/contact/contact_assembler.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -53,4 +63,49 @@ main(int argc, char **argv)
           << " mm), turned by " << theta.norm() * 180. / M_PI
           << " degrees about " << std::setprecision(2) << theta / theta.norm()
           << std::endl;
+
+  const auto            &contact = *problem.contact_assembler();
+  const Vector<double>   x       = problem.displacement(u);
+  const auto             n       = x.size();
+  DynamicSparsityPattern dsp(n);
+  contact.add_couplings(x, 0.01, dsp);
+  for (types::global_dof_index i = 0; i < n; ++i)
+    dsp.add(i, i);
+  SparsityPattern pattern;
+  pattern.copy_from(dsp);
+  // far away (every coordinate moved by 1 m: a new search), then back: a pass
+  // over all candidates
+  Vector<double> far(x);
+  far.add(1.);
+  contact.energy(far);
+  SparseMatrix<double> K_ref(pattern), K(pattern);
+  Vector<double>       R_ref(n), R(n);
+  contact.assemble(x, R_ref, &K_ref);
+  // positions moved by at most 0.35 mm at random, well within half the
+  // candidate list's margin (no new search), whose energy finds other
+  // pairs past the rejection tests; its second evaluation reuses them
+  Vector<double> near(x);
+  for (auto &v : near)
+    v += 2e-4 * random_value(-1., 1.);
+  const double E_near = contact.energy(near);
+  bool         equal  = contact.energy(near) == E_near;
+  // the energy nearby after a new search (20 mm away and back: the tree is
+  // refitted, not rebuilt, so the candidates keep their order)
+  Vector<double> shifted(x);
+  shifted.add(0.0115);
+  contact.energy(shifted);
+  equal = equal && contact.energy(near) == E_near;
+  for (unsigned int pass = 0; pass < 2; ++pass)
+    {
+      R = 0.;
+      K = 0.;
+      contact.assemble(x, R, &K);
+      R -= R_ref;
+      K.add(-1., K_ref);
+      equal = equal && R.linfty_norm() == 0. && K.frobenius_norm() == 0.;
+    }
+  deallog << "final state: the contact energy nearby twice, then the "
+             "residual and tangent twice, against passes after a new "
+             "search: equal bit for bit "
+          << equal << std::endl;
 }

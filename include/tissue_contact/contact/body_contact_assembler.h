@@ -177,6 +177,15 @@ namespace TissueContact
       mutable std::vector<unsigned int> offsets;
       mutable std::vector<Point<3>>     x_at_candidates;
       mutable bool                      have_candidates = false;
+      /** The candidates that passed rejected() in the last evaluation that
+       * tested them all: survivors[i] indexes those of surface_triangles[i]
+       * in the list, in the list's order, at the positions
+       * x_at_survivors. The residual and tangent and the sparsity check
+       * that follow a line search's energy at the same positions visit only
+       * these (doc/theory/05-contact.md, sec. 2.1). */
+      mutable std::vector<std::vector<unsigned int>> survivors;
+      mutable std::vector<Point<3>>                  x_at_survivors;
+      mutable bool                                   have_survivors = false;
       /** The triangles of the surface bodies of the pairs. */
       std::vector<unsigned int> surface_triangles;
       /** The list's margin m: a tenth of the mean tetrahedron box
@@ -219,6 +228,31 @@ namespace TissueContact
           4 * MultithreadInfo::n_threads(),
           32);
       }
+
+      /** Call @p f(t, k, pair, geometry) for every candidate of
+       * surface_triangles[i] in the list that rejected() does not reject at
+       * the positions @p x, in the list's order: only the recorded
+       * survivors if @p known (they were found at these positions), else
+       * all candidates, recording the survivors. For a pass over all
+       * triangles at the positions of the last update_candidates(), begun
+       * with begin_survivors() and ended with end_survivors(). */
+      template <typename F>
+      void
+      for_each_surviving_pair_of(const unsigned int           i,
+                                 const std::vector<Point<3>> &x,
+                                 const bool                   known,
+                                 const F                     &f) const;
+
+      /** Whether the survivors are those of the positions @p x; if not,
+       * they are invalidated, to be recorded anew by the pass that
+       * follows (the return value false tells it to record). */
+      bool
+      begin_survivors(const std::vector<Point<3>> &x) const;
+
+      /** The survivors recorded by a pass at the positions @p x are
+       * valid. */
+      void
+      end_survivors(const std::vector<Point<3>> &x) const;
 
       /** Call @p f(t, k, pair) for every candidate of surface_triangles[i]
        * in the list. */
