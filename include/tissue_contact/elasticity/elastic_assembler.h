@@ -123,7 +123,10 @@ namespace TissueContact
        * couplings made that search most of the elastic assembly. Call again
        * whenever @p pattern changes; a matrix on another pattern, or on
        * this one after its number of entries changed, is assembled by
-       * searching as before.
+       * searching as before. A row with the same columns as in the pattern
+       * of the last call keeps its entries' offsets within the row (only
+       * the row's start moves): only the rows contact couplings changed are
+       * searched again.
        */
       void
       use_matrix_pattern(const SparsityPattern &pattern);
@@ -231,6 +234,10 @@ namespace TissueContact
       std::vector<unsigned int> positions;
       const SparsityPattern    *positions_pattern = nullptr;
       std::size_t               positions_entries = 0;
+      // the rows the positions were found in: each row's first position
+      // [n_rows + 1] and the columns, in the pattern's order
+      std::vector<std::size_t>             positions_row_start;
+      std::vector<types::global_dof_index> positions_columns;
 
       // the volume term at the vertices: null if no body has it
       std::unique_ptr<NodalPressure> nodal;
