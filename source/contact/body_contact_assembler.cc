@@ -420,7 +420,8 @@ namespace TissueContact
       const auto scope = time_section(timer, "contact: kernels");
       const bool known = begin_survivors(x);
       // the pairs of each contact triangle are evaluated in parallel (the
-      // list is only read); f sees them serially, in the order of a serial
+      // list is only read, a triangle's survivors written by its worker
+      // alone); f sees them serially, in the order of a serial
       // loop, so sums are reproducible
       struct Result
       {
