@@ -11,7 +11,12 @@ root_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${BUILD_DIR:-"$root_dir/build"}
 jobs=${JOBS:-$(nproc)}
 
-packages=(libdeal.ii-dev zlib1g-dev gmsh numdiff gnuplot-nox python3 cmake g++ make)
+# libopenblas0-serial: Debian's optimized BLAS and LAPACK, which take over
+# libblas.so.3 and liblapack.so.3 from the reference implementation that
+# libdeal.ii-dev brings (UMFPACK's and MUMPS' dense kernels: a direct solve
+# of the coarse knee 2.5 times faster, doc/theory/04-solver.md sec. 4.5).
+# The serial build: threaded BLAS would compete with TBB's threads.
+packages=(libdeal.ii-dev libopenblas0-serial zlib1g-dev gmsh numdiff gnuplot-nox python3 cmake g++ make)
 
 missing=()
 for p in "${packages[@]}"; do
