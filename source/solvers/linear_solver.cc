@@ -1,11 +1,11 @@
 #include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/solvers/amg_preconditioner.h>
 #include <tissue_contact/solvers/linear_solver.h>
 
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/sparse_direct.h>
-#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
@@ -148,36 +148,13 @@ namespace TissueContact
     {
       // a hierarchy of a matrix of another size (another problem) is no
       // preconditioner of this one
-      if (amg && amg_matrix.m() != K.m())
+      if (amg && amg->m() != K.m())
         amg.reset();
       const bool fresh = !amg;
       if (fresh)
         {
-          TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
-          amg_data.elliptic              = true;
-          amg_data.higher_order_elements = false;
-          amg_data.smoother_sweeps       = 2;
-          amg_data.aggregation_threshold = 1e-4;
-          amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-          // the fine level of the hierarchy keeps a reference to the matrix
-          amg_matrix.reinit(K);
-          if (null_space_dimension == 0)
-            amg->initialize(amg_matrix, amg_data);
-          else
-            {
-              // deal.II's ML settings, with the null space given as vectors
-              // (AdditionalData takes only 0/1 masks)
-              AssertDimension(null_space.size(), null_space_dimension * K.m());
-              Teuchos::ParameterList              ml;
-              std::unique_ptr<Epetra_MultiVector> unused;
-              amg_data.set_parameters(ml, unused, amg_matrix);
-              ml.set("null space: type", "pre-computed");
-              ml.set("null space: dimension",
-                     static_cast<int>(null_space_dimension));
-              ml.set("null space: vectors",
-                     const_cast<double *>(null_space.data()));
-              amg->initialize(amg_matrix, ml);
-            }
+          amg = std::make_unique<AMGPreconditioner>();
+          amg->initialize(K, null_space, null_space_dimension);
         }
       // the residual to start from: |b| for x = 0, else that of the iterate
       // a drifted hierarchy left (below)

@@ -1,9 +1,9 @@
 #pragma once
 
+#include <tissue_contact/solvers/amg_preconditioner.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/trilinos_precondition.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <memory>
@@ -27,7 +27,8 @@ namespace TissueContact
      * - "GMRES+AMG": GMRES preconditioned by Trilinos ML smoothed-aggregation
      *   algebraic multigrid with the three translations, or the six
      *   rigid-body modes (translations and rotations), as its near-null
-     *   space.
+     *   space; the cycle's finest level runs on deal.II's threads
+     *   (AMGPreconditioner).
      * Reaching the iteration cap is not an error (inexact Newton); a
      * non-finite solution is.
      */
@@ -191,9 +192,8 @@ namespace TissueContact
                 const double                target,
                 bool                       &converged) const;
 
-      mutable std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
-      /** The matrix the hierarchy was built from (ML keeps a reference). */
-      mutable TrilinosWrappers::SparseMatrix amg_matrix;
+      /** The hierarchy (with its copy of the matrix it was built from). */
+      mutable std::unique_ptr<AMGPreconditioner> amg;
       /** Iterations per decade of residual of the first solve with the
        * current hierarchy. */
       mutable double       fresh_rate         = 0.;

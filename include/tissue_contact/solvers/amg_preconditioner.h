@@ -1,0 +1,76 @@
+#pragma once
+
+#include <deal.II/lac/diagonal_matrix.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <vector>
+
+namespace TissueContact
+{
+  namespace Solvers
+  {
+    using namespace dealii;
+
+    /**
+     * One V-cycle of smoothed-aggregation algebraic multigrid whose finest
+     * level runs on deal.II's threads (doc/theory/04-solver.md sec. 4.5.2).
+     *
+     * Trilinos ML builds the hierarchy (aggregates, prolongators, coarse
+     * operators and their Chebyshev smoothers) from a copy of the matrix
+     * @f$A@f$, but is told to do nothing on the finest level; there deal.II's
+     * Chebyshev smoother @f$S@f$ (degree 2, Jacobi-scaled, as ML's own) and
+     * the residual run on deal.II's sparse matrix, whose products use the
+     * threads. With @f$C@f$ the coarse correction ML applies
+     * (@f$C r = P\,M_c^{-1} R\,r@f$, the cycle below the finest level):
+     * @f[
+     *   x_1 = S\,b, \qquad x_2 = x_1 + C\,(b - A x_1), \qquad
+     *   x = x_2 + S\,(b - A x_2),
+     * @f]
+     * the same cycle ML runs with its own finest-level smoother, which is
+     * serial here (Epetra without OpenMP). The operator is fixed between
+     * initialize() calls (it uses the copy, not later matrices), so a
+     * Krylov method may keep it across systems.
+     */
+    class AMGPreconditioner
+    {
+    public:
+      /** Build the hierarchy of @p A (copied) with ML's settings of the
+       * project (Chebyshev, 2 sweeps, aggregation threshold 1e-4, the
+       * elliptic defaults) and the near-null space @p null_space, @p
+       * null_space_dimension vectors of A.m() entries one after the other
+       * (none: ML's default). */
+      void
+      initialize(const SparseMatrix<double> &A,
+                 const std::vector<double>  &null_space,
+                 const unsigned int          null_space_dimension);
+
+      /** @p x = the V-cycle applied to @p b. */
+      void
+      vmult(Vector<double> &x, const Vector<double> &b) const;
+
+      /** Rows of the matrix it was built from. */
+      types::global_dof_index
+      m() const
+      {
+        return matrix.m();
+      }
+
+    private:
+      SparsityPattern      pattern;
+      SparseMatrix<double> matrix;
+      /** ML's copy of the matrix (its hierarchy keeps a reference). */
+      TrilinosWrappers::SparseMatrix    ml_matrix;
+      TrilinosWrappers::PreconditionAMG coarse_levels;
+      using Smoother = PreconditionChebyshev<SparseMatrix<double>,
+                                             Vector<double>,
+                                             DiagonalMatrix<Vector<double>>>;
+      Smoother               smoother;
+      mutable Vector<double> residual, correction;
+    };
+  } // namespace Solvers
+} // namespace TissueContact
