@@ -1,3 +1,4 @@
+#include <tissue_contact/base/nonzero_copy.h>
 #include <tissue_contact/solvers/amg_preconditioner.h>
 
 #include <Epetra_MultiVector.h>
@@ -15,11 +16,10 @@ namespace TissueContact
                                   const std::vector<double>  &null_space,
                                   const unsigned int null_space_dimension)
     {
-      // the copy first: the smoother and the hierarchy keep references
-      matrix.clear();
-      pattern.copy_from(A.get_sparsity_pattern());
-      matrix.reinit(pattern);
-      matrix.copy_from(A);
+      // the copy first (the smoother and the hierarchy keep references),
+      // without the entries that are stored but zero (doc/theory/
+      // 04-solver.md sec. 4.5.2)
+      copy_nonzeros(A, pattern, matrix);
       ml_matrix.reinit(matrix);
 
       // the project's ML settings, with nothing done on the finest level
