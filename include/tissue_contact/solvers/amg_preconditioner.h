@@ -23,10 +23,10 @@ namespace TissueContact
      * Trilinos ML builds the hierarchy (aggregates, prolongators, coarse
      * operators and their Chebyshev smoothers) from a copy of the matrix
      * @f$A@f$ without its stored zeros (most of a contact tangent's
-     * entries), but is told to do nothing on the finest level; there deal.II's
-     * Chebyshev smoother @f$S@f$ (degree 2, Jacobi-scaled, as ML's own) and
-     * the residual run on deal.II's sparse matrix, whose products use the
-     * threads. With @f$C@f$ the coarse correction ML applies
+     * entries), but is told to do nothing on the finest level; there
+     * deal.II's Chebyshev smoother @f$S@f$ (degree 2, Jacobi-scaled, as
+     * ML's own) and the residual run on deal.II's sparse matrix, whose
+     * products use the threads. With @f$C@f$ the coarse correction ML applies
      * (@f$C r = P\,M_c^{-1} R\,r@f$, the cycle below the finest level):
      * @f[
      *   x_1 = S\,b, \qquad x_2 = x_1 + C\,(b - A x_1), \qquad
@@ -40,11 +40,11 @@ namespace TissueContact
     class AMGPreconditioner
     {
     public:
-      /** Build the hierarchy of @p A (copied without its stored zeros) with ML's settings of the
-       * project (Chebyshev, 2 sweeps, aggregation threshold 1e-4, the
-       * elliptic defaults) and the near-null space @p null_space, @p
-       * null_space_dimension vectors of A.m() entries one after the other
-       * (none: ML's default). */
+      /** Build the hierarchy of @p A (copied without its stored zeros)
+       * with the project's ML settings (Chebyshev, 2 sweeps, aggregation
+       * threshold 1e-4, the elliptic defaults) and the near-null space @p
+       * null_space, @p null_space_dimension vectors of A.m() entries one
+       * after the other (none: ML's default). */
       void
       initialize(const SparseMatrix<double> &A,
                  const std::vector<double>  &null_space,
