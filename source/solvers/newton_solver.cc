@@ -3,7 +3,7 @@
 #include <tissue_contact/base/timing.h>
 #include <tissue_contact/solvers/newton_solver.h>
 
-#include <deal.II/numerics/matrix_tools.h>
+#include <deal.II/base/parallel.h>
 
 #include <cmath>
 #include <limits>
@@ -13,6 +13,46 @@ namespace TissueContact
 {
   namespace Solvers
   {
+    namespace
+    {
+      /**
+       * The step's constraint du = 0 on the prescribed DoFs, as
+       * MatrixTools::apply_boundary_values() with zero values and
+       * eliminated columns leaves the system (the same numbers): their rows
+       * and columns of @p K zeroed but for the diagonal, @p rhs and @p du
+       * zero there (rhs as 0 times the diagonal). One pass over the rows,
+       * on the threads; deal.II's function searches each column entry in
+       * its row, 3 % of the full knee's two-thread profile.
+       */
+      void
+      constrain_prescribed(SparseMatrix<double>    &K,
+                           const std::vector<bool> &prescribed,
+                           Vector<double>          &rhs,
+                           Vector<double>          &du)
+      {
+        parallel::apply_to_subranges(
+          types::global_dof_index(0),
+          K.m(),
+          [&](const types::global_dof_index begin,
+              const types::global_dof_index end) {
+            for (types::global_dof_index i = begin; i < end; ++i)
+              {
+                const bool row = prescribed[i];
+                for (auto entry = K.begin(i); entry != K.end(i); ++entry)
+                  if (entry->column() != i &&
+                      (row || prescribed[entry->column()]))
+                    entry->value() = 0.;
+                if (row)
+                  {
+                    rhs[i] = 0. * K.diag_element(i);
+                    du[i]  = 0.;
+                  }
+              }
+          },
+          1000);
+      }
+    } // namespace
+
     void
     IncrementalNewtonSolver::Parameters::declare_parameters(
       ParameterHandler &prm)
@@ -156,15 +196,8 @@ namespace TissueContact
 
       const auto        targets = problem.prescribed_values(load_factor);
       std::vector<bool> prescribed(n, false);
-      // the prescribed DoFs with value zero: the step's constraint once the
-      // prescribed values are lifted out (LOOP 2), the same in every
-      // iteration
-      std::map<types::global_dof_index, double> zero;
       for (const auto &t : targets)
-        {
-          prescribed[t.first] = true;
-          zero.emplace_hint(zero.end(), t.first, 0.);
-        }
+        prescribed[t.first] = true;
 
       const auto norms = [&](const Vector<double> &R) {
         double free = 0., reaction = 0.;
@@ -329,7 +362,7 @@ namespace TissueContact
             rhs *= -1.;
             du = 0.;
             // a prescribed row keeps its assembled diagonal in
-            // apply_boundary_values(); a node that only a contact pair
+            // constrain_prescribed(); a node that only a contact pair
             // touches (a rigid body's) can bring one of 1e-47, a pivot a
             // factorization rightly calls zero: such a row gets the mean
             // diagonal of the free rows instead (the others keep theirs)
@@ -358,7 +391,7 @@ namespace TissueContact
                 K.vmult_add(rhs, lift);
                 rhs *= -1.;
               }
-            MatrixTools::apply_boundary_values(zero, K, du, rhs, true);
+            constrain_prescribed(K, prescribed, rhs, du);
             const double eta =
               linear_solver->forcing(r, r_previous, eta_previous, tolerance);
             const unsigned int fallbacks = linear_solver->direct_fallbacks();
