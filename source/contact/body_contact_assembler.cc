@@ -39,43 +39,65 @@ namespace TissueContact
       const auto body = [&](const types::material_id m) {
         return body_of_material(body_of, m);
       };
-      std::set<types::material_id> volume_bodies;
+      std::set<types::material_id>               volume_bodies;
+      std::map<types::material_id, unsigned int> number;
       for (const auto &p : pairs)
-        volume_bodies.insert(p.volume_body);
+        {
+          volume_bodies.insert(p.volume_body);
+          number.emplace(p.surface_body, number.size());
+          number.emplace(p.volume_body, number.size());
+        }
+      n_pair_bodies = number.size();
+      pairs_of.resize(n_pair_bodies * n_pair_bodies);
+      for (unsigned int i = 0; i < pairs.size(); ++i)
+        pairs_of[n_pair_bodies * number[pairs[i].surface_body] +
+                 number[pairs[i].volume_body]]
+          .push_back(i);
+      for (const auto b : surface.triangle_body)
+        triangle_body.push_back(number.count(b) > 0 ? number[b] :
+                                                      n_pair_bodies);
+      // the tree holds the tetrahedra with a vertex of positive depth: one
+      // whose vertices all lie on contact surfaces (depth 0) has no material
+      // depth to push with, so no pair with it has energy; in the thin
+      // layers of the knee such tetrahedra were half the candidates
+      // (doc/theory/05-contact.md, sec. 2.2). The rebuild distance is the
+      // mean box diagonal of all the volume bodies' tetrahedra.
+      double                      size    = 0.;
+      unsigned int                n_boxes = 0;
+      std::vector<BoundingBox<3>> boxes;
       for (const auto &cell : tria.active_cell_iterators())
         if (volume_bodies.count(body(cell->material_id())) > 0)
           {
-            tets.push_back({cell->vertex_index(0),
-                            cell->vertex_index(1),
-                            cell->vertex_index(2),
-                            cell->vertex_index(3)});
-            tet_body.push_back(body(cell->material_id()));
-            tet_has_depth.push_back(
-              std::any_of(tets.back().begin(),
-                          tets.back().end(),
-                          [&](const unsigned int v) { return depth[v] > 0.; }));
-            for (const unsigned int v : tets.back())
-              AssertThrow(std::isfinite(depth[v]),
+            const std::array<unsigned int, 4> v{{cell->vertex_index(0),
+                                                 cell->vertex_index(1),
+                                                 cell->vertex_index(2),
+                                                 cell->vertex_index(3)}};
+            for (const unsigned int i : v)
+              AssertThrow(std::isfinite(depth[i]),
                           ExcMessage("Contact: body with material id " +
                                      std::to_string(body(cell->material_id())) +
                                      " is the volume body of a pair but has "
                                      "no contact surface: its material depth "
                                      "is undefined"));
+            const BoundingBox<3> box(
+              std::array<Point<3>, 4>{{surface.X[v[0]],
+                                       surface.X[v[1]],
+                                       surface.X[v[2]],
+                                       surface.X[v[3]]}});
+            size += box.get_boundary_points().first.distance(
+              box.get_boundary_points().second);
+            ++n_boxes;
+            if (std::none_of(v.begin(), v.end(), [&](const unsigned int i) {
+                  return depth[i] > 0.;
+                }))
+              continue;
+            tets.push_back(v);
+            tet_body.push_back(number[body(cell->material_id())]);
+            boxes.push_back(box);
           }
-      std::vector<BoundingBox<3>> boxes;
-      for (const auto &t : tets)
-        boxes.push_back(
-          BoundingBox<3>(std::array<Point<3>, 4>{{surface.X[t[0]],
-                                                  surface.X[t[1]],
-                                                  surface.X[t[2]],
-                                                  surface.X[t[3]]}}));
-      tree        = std::make_unique<BoundingVolumeTree>(boxes);
-      x_at_build  = surface.X;
-      double size = 0.;
-      for (const auto &b : boxes)
-        size += b.get_boundary_points().first.distance(
-          b.get_boundary_points().second);
-      rebuild_distance = boxes.empty() ? 0. : size / boxes.size();
+      tree             = std::make_unique<BoundingVolumeTree>(boxes);
+      x_at_build       = surface.X;
+      rebuild_distance = n_boxes == 0 ? 0. : size / n_boxes;
       candidate_margin = 0.1 * rebuild_distance;
       for (unsigned int t = 0; t < surface.triangles.size(); ++t)
         if (surface_of_a_pair(t))
@@ -172,17 +194,16 @@ namespace TissueContact
     {
       if (!surface_of_a_pair(t))
         return;
+      const std::vector<unsigned int> *row =
+        &pairs_of[n_pair_bodies * triangle_body[t]];
       const auto    &tv = surface.triangles[t];
       BoundingBox<3> box =
         BoundingBox<3>(std::array<Point<3>, 3>{{x[tv[0]], x[tv[1]], x[tv[2]]}});
       if (margin > 0.)
         box.extend(margin);
       tree->for_each_overlap(box, [&](const unsigned int k) {
-        // a tetrahedron whose vertices all lie on contact surfaces (depth 0)
-        // has no material depth to push with: no pair with it has energy,
-        // and in the thin layers of the knee such tetrahedra were half the
-        // candidates (doc/theory/05-contact.md, sec. 2.2)
-        if (!tet_has_depth[k])
+        const std::vector<unsigned int> &matching = row[tet_body[k]];
+        if (matching.empty())
           return;
         const auto &kv = tets[k];
         // a triangle that is a face of the tetrahedron
@@ -191,10 +212,8 @@ namespace TissueContact
           shared += std::count(kv.begin(), kv.end(), a);
         if (shared == 3)
           return;
-        for (const auto &p : pairs)
-          if (p.surface_body == surface.triangle_body[t] &&
-              p.volume_body == tet_body[k])
-            f(t, k, p);
+        for (const unsigned int p : matching)
+          f(t, k, pairs[p]);
       });
     }
 
@@ -275,7 +294,7 @@ namespace TissueContact
                                    const PairGeometry &geometry) const
     {
       // (a tetrahedron of zero depth at all four vertices never gets here:
-      // for_each_candidate_of() drops it)
+      // it is not in the tree)
       const auto &[tet, tri, g] = geometry;
       // the boxes of triangle and tetrahedron apart by more than 1e-6 of the
       // tetrahedron's size: the clipping could not find a point within
@@ -665,10 +684,6 @@ namespace TissueContact
           [&](const unsigned int t,
               const unsigned int k,
               const BodyContact &p) {
-            // zero depth at the four vertices: zero everywhere inside
-            if (depth[tets[k][0]] == 0. && depth[tets[k][1]] == 0. &&
-                depth[tets[k][2]] == 0. && depth[tets[k][3]] == 0.)
-              return;
             const Point<3>    &x0 = x[tets[k][0]];
             const Tensor<1, 3> a = x[tets[k][1]] - x0, b = x[tets[k][2]] - x0,
                                c  = x[tets[k][3]] - x0;

@@ -145,9 +145,16 @@ namespace TissueContact
       std::vector<BodyContact>                 pairs;
       std::vector<Method>                      methods; // per pair
       std::vector<double>                      depth;   // per vertex
-      std::vector<std::array<unsigned int, 4>> tets;    // vertex indices
-      std::vector<types::material_id>          tet_body;
-      std::vector<bool> tet_has_depth; // a vertex of positive depth
+      std::vector<std::array<unsigned int, 4>> tets; // of depth > 0 somewhere
+      /** The bodies of the pairs numbered 0, 1, ...: the number of each
+       * tetrahedron's and each triangle's body (n_pair_bodies for a
+       * triangle of no pair's surface body), and the pairs of each
+       * (surface body, volume body) in pairs_of[n_pair_bodies * s + v], in
+       * the declared order (the broad phase's lookup). */
+      unsigned int                                n_pair_bodies = 0;
+      std::vector<unsigned int>                   tet_body;
+      std::vector<unsigned int>                   triangle_body;
+      std::vector<std::vector<unsigned int>>      pairs_of;
       mutable std::unique_ptr<BoundingVolumeTree> tree; // over tets
       mutable unsigned int                        n_rebuilds = 0;
       mutable std::vector<Point<3>> x_at_build; // positions at the build

@@ -38,17 +38,28 @@ namespace TissueContact
      * A binary tree of axis-aligned bounding boxes over a set of objects
      * (tetrahedra, triangles), the broad phase of dissertation sec. 5.4.5:
      * built top-down by splitting each node's objects at the median of their
-     * box centers along the node's largest extent; refitted bottom-up when
-     * the objects move (the topology is kept, only the boxes grow or
-     * shrink), which is cheaper than a rebuild and exact, though the tree
-     * may degrade when the motion is large (objects that were neighbours
-     * drift apart); cost() measures it. The contact assembler rebuilds the
-     * tree when a vertex has moved farther than the mean tetrahedron size
-     * since the last build.
+     * box centers along the node's largest extent, down to leaves of at most
+     * leaf_size objects; refitted bottom-up when the objects move (the
+     * topology is kept, only the boxes grow or shrink), which is cheaper than
+     * a rebuild and exact, though the tree may degrade when the motion is
+     * large (objects that were neighbours drift apart); cost() measures it.
+     * The contact assembler rebuilds the tree when a vertex has moved
+     * farther than the mean tetrahedron size since the last build.
+     *
+     * The walk is limited by memory traffic, not arithmetic (doc/theory/
+     * 05-contact.md, sec. 2): the nodes hold single-precision boxes rounded
+     * outward (32 bytes a node, two to a cache line), supersets of the
+     * double-precision boxes of their objects, and a leaf's objects are
+     * tested with their own double-precision boxes. The objects found and
+     * their order are those of a tree of one object per leaf built by the
+     * same median splits.
      */
     class BoundingVolumeTree
     {
     public:
+      /** The most objects in a leaf. */
+      static constexpr unsigned int leaf_size = 4;
+
       /** Build over @p boxes; object i has box boxes[i]. */
       explicit BoundingVolumeTree(const std::vector<BoundingBox<3>> &boxes);
 
@@ -57,31 +68,38 @@ namespace TissueContact
       refit(const std::vector<BoundingBox<3>> &boxes);
 
       /** Call @p f(i) for every object whose box intersects @p box
-       * (overlap()), depth first, the right subtree before the left. */
+       * (overlap()), depth first, the right subtree before the left (within
+       * a leaf, the order of a right-first walk of its median splits). */
       template <typename F>
       void
       for_each_overlap(const BoundingBox<3> &box, const F &f) const
       {
         if (nodes.empty())
           return;
+        const Node query = outward(box, 2);
         // a median split halves the objects at each level: the depth is
         // at most log2(n) + 1, and the stack holds at most one node per
         // level and the root
-        std::array<int, 66> stack;
-        unsigned int        top = 0;
-        stack[top++]            = 0;
+        std::array<unsigned int, 66> stack;
+        unsigned int                 top = 0;
+        stack[top++]                     = 0;
         while (top > 0)
           {
-            const Node &n = nodes[stack[--top]];
-            if (!overlap(n.box, box))
+            const unsigned int index = stack[--top];
+            const Node        &n     = nodes[index];
+            if (!overlaps(n, query))
               continue;
-            if (n.left < 0)
-              f(n.object);
+            if (n.count > 0)
+              {
+                for (unsigned int i = n.first; i < n.first + n.count; ++i)
+                  if (overlap(leaf_boxes[i], box))
+                    f(objects[i]);
+              }
             else
               {
                 AssertIndexRange(top + 1, stack.size());
-                stack[top++] = n.left;
-                stack[top++] = n.right;
+                stack[top++] = index + 1; // the left child follows its parent
+                stack[top++] = n.first;   // the right child
               }
           }
       }
@@ -98,14 +116,14 @@ namespace TissueContact
         const Point<3>                                    &p,
         const std::function<double(unsigned int, double)> &distance) const;
 
-      /** The summed surface area of the inner nodes' boxes (the expected
-       * work of a query is proportional to it: the surface area heuristic)
-       * divided by that of the objects' boxes, so that a uniform stretch
-       * of the objects leaves it unchanged. */
+      /** The summed surface area of the nodes' boxes (the expected work of
+       * a query is proportional to it: the surface area heuristic) divided
+       * by that of the objects' boxes, so that a uniform stretch of the
+       * objects leaves it unchanged. */
       double
       cost() const;
 
-      /** Number of tree nodes (2 n_objects - 1). */
+      /** Number of tree nodes (inner nodes and leaves). */
       unsigned int
       n_nodes() const
       {
@@ -113,21 +131,50 @@ namespace TissueContact
       }
 
     private:
+      /** A box in single precision; an inner node's left child is the
+       * node after it, its right child nodes[first]; a leaf (count > 0)
+       * holds objects[first] .. objects[first + count - 1]. */
       struct Node
       {
-        BoundingBox<3> box;
-        int            left = -1, right = -1; // children, -1 for a leaf
-        unsigned int   object = 0;            // the object of a leaf
+        std::array<float, 3> lo, hi;
+        unsigned int         first = 0, count = 0;
       };
       std::vector<Node> nodes;
+      /** The objects in the leaves' order, and their boxes. */
+      std::vector<unsigned int>   objects;
+      std::vector<BoundingBox<3>> leaf_boxes;
 
-      int
-      build(std::vector<unsigned int>         &objects,
+      /** Single-precision box containing @p box, widened by @p ulps units
+       * in the last place of a float on each side. */
+      static Node
+      outward(const BoundingBox<3> &box, const unsigned int ulps = 0);
+
+      /** Whether the boxes overlap (touching counts; a NaN bound
+       * overlaps, as with overlap() of two BoundingBox). */
+      static bool
+      overlaps(const Node &a, const Node &b)
+      {
+        for (unsigned int d = 0; d < 3; ++d)
+          if (a.lo[d] > b.hi[d] || b.lo[d] > a.hi[d])
+            return false;
+        return true;
+      }
+
+      void
+      build(std::vector<unsigned int>         &order,
             const unsigned int                 begin,
             const unsigned int                 end,
             const std::vector<BoundingBox<3>> &boxes);
+      /** Append order[begin, end) to objects in the order a tree of one
+       * object per leaf, split as build() splits, would visit them. */
       void
-      refit(const int node, const std::vector<BoundingBox<3>> &boxes);
+      append_leaf_objects(std::vector<unsigned int>         &order,
+                          const unsigned int                 begin,
+                          const unsigned int                 end,
+                          const std::vector<BoundingBox<3>> &boxes);
+      /** Recompute the nodes' boxes from leaf_boxes. */
+      void
+      fit_nodes();
     };
 
     /** Euclidean distance from @p p to the box @p b (0 inside). */
