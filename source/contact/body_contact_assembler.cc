@@ -501,49 +501,55 @@ namespace TissueContact
         return;
       const std::vector<Point<3>> x = surface.positions(u);
       refit(x);
-      // the vertices' couplings first (7 x 7 per pair, in sorted rows),
-      // then each vertex row expanded to its 3 x 3 DoF blocks: a ninth of
-      // the insertions of adding each pair's 21 x 21 DoFs (the pattern
-      // builds were 7 % of the knee-scale tube's run that way). The
-      // triangles' searches in parallel, their pairs' vertices added in
-      // the triangles' order
+      // the vertices' couplings first, then each vertex row expanded to its
+      // 3 x 3 DoF blocks: a ninth of the insertions of adding each pair's
+      // 21 x 21 DoFs (the pattern builds were 7 % of the knee-scale tube's
+      // run that way). A pair couples its tetrahedron's 4 vertices and its
+      // triangle's 3 with each other; the tetrahedron is a cell and the
+      // triangle a face of one, so the finite element pattern holds their
+      // couplings among themselves, and only those across are added: with
+      // V the vertices of a triangle's pairs' tetrahedra, the triangle's
+      // rows get V and the rows of V the triangle's vertices (on the full
+      // knee this halved the insertions, the same pattern). The triangles'
+      // searches in parallel, their vertices added in the triangles' order
       DynamicSparsityPattern vertex_pattern(surface.X.size());
-      using Vertices = std::array<unsigned int, 8>; // sorted, then the count
+      struct Across
+      {
+        std::array<unsigned int, 3> triangle; // sorted
+        std::vector<unsigned int>   V;        // sorted, unique
+      };
       per_surface_triangle(
-        [&](const unsigned int i, std::vector<Vertices> &found) {
-          found.clear();
+        [&](const unsigned int i, Across &found) {
+          found.V.clear();
+          found.triangle = surface.triangles[surface_triangles[i]];
+          std::sort(found.triangle.begin(), found.triangle.end());
           for_each_candidate_of(surface_triangles[i],
                                 x,
                                 margin,
                                 [&](const unsigned int t,
                                     const unsigned int k,
                                     const BodyContact &p) {
-                                  if (!may_gain_energy(x, t, k, p, margin))
-                                    return;
-                                  const auto &tv = surface.triangles[t];
-                                  Vertices    v  = {{tets[k][0],
-                                                     tets[k][1],
-                                                     tets[k][2],
-                                                     tets[k][3],
-                                                     tv[0],
-                                                     tv[1],
-                                                     tv[2],
-                                                     0}};
-                                  std::sort(v.begin(), v.begin() + 7);
-                                  v[7] = std::unique(v.begin(), v.begin() + 7) -
-                                         v.begin();
-                                  found.push_back(v);
+                                  if (may_gain_energy(x, t, k, p, margin))
+                                    found.V.insert(found.V.end(),
+                                                   tets[k].begin(),
+                                                   tets[k].end());
                                 });
+          std::sort(found.V.begin(), found.V.end());
+          found.V.erase(std::unique(found.V.begin(), found.V.end()),
+                        found.V.end());
         },
-        [&](const std::vector<Vertices> &found) {
-          for (const Vertices &v : found)
-            for (unsigned int a = 0; a < v[7]; ++a)
-              vertex_pattern.add_entries(v[a],
-                                         v.begin(),
-                                         v.begin() + v[7],
-                                         true);
+        [&](const Across &found) {
+          if (found.V.empty())
+            return;
+          for (const unsigned int a : found.triangle)
+            vertex_pattern.add_entries(a, found.V.begin(), found.V.end(), true);
+          for (const unsigned int b : found.V)
+            vertex_pattern.add_entries(b,
+                                       found.triangle.begin(),
+                                       found.triangle.end(),
+                                       true);
         },
-        std::vector<Vertices>());
+        Across());
       std::vector<types::global_dof_index> columns;
       for (unsigned int a = 0; a < vertex_pattern.n_rows(); ++a)
         {
@@ -600,7 +606,8 @@ namespace TissueContact
       const bool known = begin_survivors(x);
       // only pairs the assembly will add (nonzero energy) need couplings;
       // add_couplings() adds whole 3 x 3 vertex blocks, so one entry per
-      // vertex pair tells. The triangles in parallel.
+      // vertex pair tells, and only the pairs across the tetrahedron and
+      // the triangle can be missing. The triangles in parallel.
       bool all = true;
       struct Has
       {
@@ -623,10 +630,12 @@ namespace TissueContact
               const auto &[tet, tri, g] = geometry;
               if (!(method_of(p).energy(tet, tri, g, p.penalty) > 0.))
                 return;
+              // the couplings across (add_couplings())
               const auto dofs = pair_dofs(t, k);
-              for (unsigned int a = 0; a < 7 && has; ++a)
-                for (unsigned int b = 0; b < 7; ++b)
-                  has = has && pattern.exists(dofs[3 * a], dofs[3 * b]);
+              for (unsigned int a = 0; a < 4 && has; ++a)
+                for (unsigned int b = 4; b < 7; ++b)
+                  has = has && pattern.exists(dofs[3 * a], dofs[3 * b]) &&
+                        pattern.exists(dofs[3 * b], dofs[3 * a]);
             });
         },
         [&](const Has &c) { all = all && c.all; },
