@@ -107,8 +107,8 @@ namespace
                  energy    = section(t, "contact: energy"),
                  pattern   = section(t, "contact: sparsity check"),
                  rebuild   = section(t, "contact: pattern build");
-    const double elastic =
-      section(t, "assembly") - search - kernels - energy - pattern - rebuild;
+    const double elastic   = section(t, "assembly") - search - kernels -
+                           insertion - energy - pattern - rebuild;
     rusage usage;
     getrusage(RUSAGE_SELF, &usage);
 
@@ -161,7 +161,7 @@ namespace
               << std::setw(8) << section(t, "total");
     for (const double v : {elastic,
                            search,
-                           kernels - insertion,
+                           kernels,
                            insertion,
                            energy,
                            pattern,

@@ -334,9 +334,35 @@ namespace TissueContact
       std::array<types::global_dof_index, 21>
       pair_dofs(const unsigned int t, const unsigned int k) const;
 
+      /** A pair with energy: triangle t, tetrahedron k, the index of its
+       * body pair in pairs, and its energy and derivatives. */
+      struct PairResult
+      {
+        unsigned int t = 0, k = 0, pair = 0;
+        PairKernel   d;
+      };
+      /** The pairs with energy of surface_triangles[i] are
+       * pair_results[i][0 .. n_pair_results[i] - 1], in the list's order
+       * (the storage is kept from call to call). */
+      mutable std::vector<std::vector<PairResult>> pair_results;
+      mutable std::vector<unsigned int>            n_pair_results;
+
+      /** Add the gradient and (if @p K) Hessian of @p r to the rows lo ..
+       * hi - 1 of @p R and @p K. */
+      void
+      add_pair(const PairResult             &r,
+               const types::global_dof_index lo,
+               const types::global_dof_index hi,
+               Vector<double>               &R,
+               SparseMatrix<double>         *K) const;
+
+      /** Fill pair_results at @p u: the triangles in parallel. */
+      void
+      evaluate_pairs(const Vector<double> &u, const bool with_hessian) const;
+
       /** Call @p f(t, k, pair, derivatives) for every intersecting pair of
        * a contact triangle t and a tetrahedron k with nonzero energy, pair
-       * the index of its body pair in pairs. */
+       * the index of its body pair in pairs, in the list's order. */
       template <typename F>
       void
       for_each_pair_contact(const Vector<double> &u,
