@@ -341,11 +341,9 @@ namespace TissueContact
         unsigned int t = 0, k = 0, pair = 0;
         PairKernel   d;
       };
-      /** The pairs with energy of surface_triangles[i] are
-       * pair_results[i][0 .. n_pair_results[i] - 1], in the list's order
-       * (the storage is kept from call to call). */
+      /** The pairs with energy of surface_triangles[i], in the list's
+       * order, from evaluate_pairs() until they are added. */
       mutable std::vector<std::vector<PairResult>> pair_results;
-      mutable std::vector<unsigned int>            n_pair_results;
 
       /** Add the gradient and (if @p K) Hessian of @p r to the rows lo ..
        * hi - 1 of @p R and @p K. */
