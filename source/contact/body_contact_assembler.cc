@@ -479,7 +479,7 @@ namespace TissueContact
       // the kernel writes into the work item's own scratch; a pair with
       // energy is copied to its triangle's list (the lists hold only such
       // pairs and are released after use: kept at their largest size, they
-      // held 150 MiB more at the full knee's peak)
+      // held 148 MiB more at the full knee's peak)
       per_surface_triangle(
         [&](const unsigned int i, PairKernel &scratch) {
           std::vector<PairResult> &results = pair_results[i];

@@ -148,7 +148,7 @@ namespace TissueContact
       std::vector<std::array<unsigned int, 4>> tets; // of depth > 0 somewhere
       /** The bodies of the pairs numbered 0, 1, ...: the number of each
        * tetrahedron's and each triangle's body (n_pair_bodies for a
-       * triangle of no pair's surface body), and the pairs of each
+       * triangle of a body in no pair), and the pairs of each
        * (surface body, volume body) in pairs_of[n_pair_bodies * s + v], in
        * the declared order (the broad phase's lookup). */
       unsigned int                                n_pair_bodies = 0;
