@@ -71,9 +71,9 @@ namespace TissueContact
         reuse_preconditioner,
         "For Type = GMRES+AMG: keep the AMG hierarchy from one solve to "
         "the next (across Newton iterations, increments, time steps and "
-        "new contact couplings) while GMRES converges at most 1.5 times "
-        "slower with it than when it was built (false: a new hierarchy for "
-        "every solve). Measured: with Forcing term = Eisenstat-Walker 30 % "
+        "new contact couplings) until the GMRES iterations it has cost "
+        "beyond those it needed when it was built add up to a new one's "
+        "setup (false: a new hierarchy for every solve). Measured: with Forcing term = Eisenstat-Walker 30 % "
         "less linear-solve time on the quick knee-scale tube, and 21 "
         "hierarchies instead of 116 on the full one (prm/knee_tube.prm, "
         "doc/theory/04-solver.md sec. 4.5.1); with a fixed Relative "
@@ -150,12 +150,15 @@ namespace TissueContact
       // preconditioner of this one
       if (amg && amg->m() != K.m())
         amg.reset();
-      const bool fresh = !amg;
-      if (fresh)
+      if (!amg)
         {
           amg = std::make_unique<AMGPreconditioner>();
           amg->initialize(K, null_space, null_space_dimension);
+          fresh_rate = -1.;
         }
+      // fresh: no solve has measured this hierarchy's rate yet (a solve
+      // that starts at its target measures nothing)
+      const bool fresh = fresh_rate < 0.;
       // the residual to start from: |b| for x = 0, else that of the iterate
       // a drifted hierarchy left (below)
       const double r0 = [&]() {
@@ -168,16 +171,17 @@ namespace TissueContact
       // the tolerance
       const double decades =
         std::max(1., std::log10(std::max(r0 / target, 1.)));
-      // a kept hierarchy gets twice the iterations the fresh one needed for
-      // as many decades, plus 20: past that the matrix has drifted from it,
-      // and a new one (its setup costs about 15 iterations on the full knee)
-      // is cheaper than going on to the cap, which such solves reached
+      // a kept hierarchy is replaced once the iterations it has cost beyond
+      // those it needed when fresh (fresh_rate per decade) add up to what a
+      // new one costs to build, setup_cost iterations: rent until the rent
+      // paid equals the price. Within a solve that is its budget; past it
+      // GMRES goes on from the iterate with a new hierarchy
       // (doc/theory/04-solver.md sec. 4.5.1)
       const unsigned int budget =
-        fresh ?
-          parameters.max_iterations :
-          std::min<unsigned int>(parameters.max_iterations,
-                                 std::ceil(2. * fresh_rate * decades) + 20);
+        fresh ? parameters.max_iterations :
+                std::min<unsigned int>(parameters.max_iterations,
+                                       std::ceil(fresh_rate * decades +
+                                                 setup_cost - excess));
       SolverControl control(budget, target, false, false);
       SolverGMRES<Vector<double>>::AdditionalData data;
       data.max_n_tmp_vectors = 52;
@@ -197,25 +201,36 @@ namespace TissueContact
         {
           converged = false;
         }
+      if (control.last_step() == 0)
+        {
+          if (!parameters.reuse_preconditioner)
+            amg.reset();
+          return 0;
+        }
       const double rate = control.last_step() / decades;
       if (fresh)
         {
           fresh_rate = rate;
+          excess     = 0.;
           // a hierarchy that did not bring its own tangent to the target (an
           // indefinite one) is not kept: with its rate as the yardstick, the
           // next solves would have run to the cap with it
           if (!converged)
             amg.reset();
         }
-      else if (!converged || rate > 1.5 * fresh_rate + 1.)
+      else
         {
-          // the matrix has drifted from the hierarchy's: a new one, now
-          // (going on from the iterate reached) if this solve stopped at
-          // its budget, else for the next solve
-          const unsigned int spent = control.last_step();
-          amg.reset();
-          if (!converged)
-            return spent + solve_amg(K, x, b, target, converged);
+          excess += std::max(0., control.last_step() - fresh_rate * decades);
+          if (!converged || excess >= setup_cost)
+            {
+              // the matrix has drifted from the hierarchy's: a new one, now
+              // (going on from the iterate reached) if this solve stopped
+              // at its budget, else for the next solve
+              const unsigned int spent = control.last_step();
+              amg.reset();
+              if (!converged)
+                return spent + solve_amg(K, x, b, target, converged);
+            }
         }
       if (!parameters.reuse_preconditioner)
         amg.reset();
@@ -227,7 +242,8 @@ namespace TissueContact
     LinearSolver::solve(const SparseMatrix<double> &K,
                         Vector<double>             &x,
                         const Vector<double>       &b,
-                        const double                relative_tolerance) const
+                        const double                relative_tolerance,
+                        const bool                  from_x) const
     {
       const double tolerance  = relative_tolerance < 0. ?
                                   parameters.relative_tolerance :
@@ -236,7 +252,8 @@ namespace TissueContact
       // Type = automatic: chosen by the size of this matrix
       const Parameters   chosen = parameters.resolved(K.m());
       const std::string &type   = chosen.type;
-      x                         = 0.;
+      if (!from_x)
+        x = 0.;
       if (type == "direct")
         solve_direct(K, x, b);
       else if (type == "GMRES+AMG")
@@ -257,8 +274,12 @@ namespace TissueContact
         }
       else
         {
-          ReductionControl control(
-            parameters.max_iterations, 1e-300, tolerance, false, false);
+          // the target relative to |b|, not to the start's residual: the
+          // same stop from x = 0, and no more than that from a given x
+          SolverControl control(parameters.max_iterations,
+                                tolerance * b.l2_norm(),
+                                false,
+                                false);
           SolverGMRES<Vector<double>>::AdditionalData data;
           data.max_n_tmp_vectors     = 52;
           data.right_preconditioning = true; // stop on |K x - b|, as above

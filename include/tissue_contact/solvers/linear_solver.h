@@ -127,21 +127,25 @@ namespace TissueContact
        * relative_tolerance (iterative solvers; negative: the prm's);
        * returns the number of iterations (1 for the direct solver). Throws
        * if the result is not finite. With Reuse preconditioner, the AMG
-       * hierarchy of an earlier solve is kept while it converges no more
-       * than 1.5 times slower (iterations per decade of residual) than it
-       * did when it was built, and rebuilt at once, GMRES going on from
-       * the iterate reached, if a solve with it takes more than twice the
-       * iterations of the fresh one for as many decades, plus 20; a fresh
+       * hierarchy of an earlier solve is kept until the iterations it
+       * has cost beyond its first solve's rate (iterations per decade of
+       * residual) add up to setup_cost, within a solve too, where GMRES
+       * then goes on from the iterate reached with a new one; a fresh
        * hierarchy with which GMRES reaches its cap is not kept. The
        * hierarchy keeps its own copy of the matrix it was built from, so
        * it stays a valid preconditioner when @p K is a later
        * tangent, also one with more contact couplings in its pattern: only
-       * the convergence rate decides when it is replaced. */
+       * the convergence rate decides when it is replaced. The iterative
+       * solvers start from @p x if @p from_x (a nearby system's solution:
+       * the residual is still measured against |b|, and 0 iterations are
+       * returned if @p x already meets it), else from zero; the direct
+       * solver ignores it. */
       unsigned int
       solve(const SparseMatrix<double> &K,
             Vector<double>             &x,
             const Vector<double>       &b,
-            const double                relative_tolerance = -1.) const;
+            const double                relative_tolerance = -1.,
+            const bool                  from_x             = false) const;
 
 
       /**
@@ -195,9 +199,16 @@ namespace TissueContact
       /** The hierarchy (with its copy of the matrix it was built from). */
       mutable std::unique_ptr<AMGPreconditioner> amg;
       /** Iterations per decade of residual of the first solve with the
-       * current hierarchy. */
-      mutable double       fresh_rate         = 0.;
-      mutable unsigned int n_direct_fallbacks = 0;
+       * current hierarchy that iterated (negative: none has yet). */
+      mutable double fresh_rate = -1.;
+      /** Iterations the current hierarchy has cost beyond fresh_rate per
+       * decade, summed over its solves. */
+      mutable double excess = 0.;
+      /** A hierarchy's setup in GMRES iterations: 0.21 s against 4.1 ms
+       * per iteration on the full knee, two threads (doc/theory/
+       * 04-solver.md sec. 4.5.1). */
+      static constexpr double setup_cost         = 50.;
+      mutable unsigned int    n_direct_fallbacks = 0;
     };
   } // namespace Solvers
 } // namespace TissueContact
