@@ -76,9 +76,9 @@ namespace TissueContact
     if (linear.type == "direct" && nonlinear_problem.n_dofs() > 20000)
       out << "  warning: a direct solver at " << nonlinear_problem.n_dofs()
           << " unknowns costs seconds per Newton iteration (measured on two "
-             "cores: UMFPACK 4.3 s at 27 783 unknowns, 37 s on the 29 685 of "
-             "the knee with its contact couplings); Linear solver/Type = "
-             "GMRES+AMG (0.55 s at 27 783) or Direct solver = MUMPS (2.7 s) "
+             "cores: UMFPACK 1.7 s at 27 783 unknowns, 5.4-6.1 s on the 29 706 "
+             "of the knee with its contact couplings); Linear solver/Type = "
+             "GMRES+AMG (0.24 s at 27 783) or Direct solver = MUMPS (1.1 s) "
              "may be faster\n";
     if (contact)
       out << "  contact: " << contact->n_triangles() << " contact triangles, "
