@@ -524,9 +524,9 @@ namespace TissueContact
 
 
     void
-    BodyContactAssembler::add_couplings(const Vector<double>   &u,
-                                        const double            margin,
-                                        DynamicSparsityPattern &dsp) const
+    BodyContactAssembler::add_couplings(const Vector<double> &u,
+                                        const double          margin,
+                                        PatternRows          &rows) const
     {
       if (pairs.empty())
         return;
@@ -542,18 +542,18 @@ namespace TissueContact
       // V the vertices of a triangle's pairs' tetrahedra, the triangle's
       // rows get V and the rows of V the triangle's vertices (on the full
       // knee this halved the insertions, the same pattern). The triangles'
-      // searches in parallel, their vertices added in the triangles' order
-      DynamicSparsityPattern vertex_pattern(surface.X.size());
+      // searches in parallel, their vertices appended to the vertices'
+      // lists in the triangles' order, each list sorted once at the end
+      std::vector<std::vector<unsigned int>> across(surface.X.size());
       struct Across
       {
-        std::array<unsigned int, 3> triangle; // sorted
-        std::vector<unsigned int>   V;        // sorted, unique
+        std::array<unsigned int, 3> triangle;
+        std::vector<unsigned int>   V; // sorted, unique
       };
       per_surface_triangle(
         [&](const unsigned int i, Across &found) {
           found.V.clear();
           found.triangle = surface.triangles[surface_triangles[i]];
-          std::sort(found.triangle.begin(), found.triangle.end());
           for_each_candidate_of(surface_triangles[i],
                                 x,
                                 margin,
@@ -573,28 +573,37 @@ namespace TissueContact
           if (found.V.empty())
             return;
           for (const unsigned int a : found.triangle)
-            vertex_pattern.add_entries(a, found.V.begin(), found.V.end(), true);
+            across[a].insert(across[a].end(), found.V.begin(), found.V.end());
           for (const unsigned int b : found.V)
-            vertex_pattern.add_entries(b,
-                                       found.triangle.begin(),
-                                       found.triangle.end(),
-                                       true);
+            across[b].insert(across[b].end(),
+                             found.triangle.begin(),
+                             found.triangle.end());
         },
         Across());
-      std::vector<types::global_dof_index> columns;
-      for (unsigned int a = 0; a < vertex_pattern.n_rows(); ++a)
-        {
-          if (vertex_pattern.row_length(a) == 0)
-            continue;
-          columns.clear();
-          for (auto b = vertex_pattern.begin(a); b != vertex_pattern.end(a);
-               ++b)
-            for (const auto dof : surface.vertex_dofs[b->column()])
-              columns.push_back(dof);
-          std::sort(columns.begin(), columns.end());
-          for (const auto row : surface.vertex_dofs[a])
-            dsp.add_entries(row, columns.begin(), columns.end(), true);
-        }
+      // each vertex's DoF rows are its own: the vertices in parallel
+      parallel::apply_to_subranges(
+        0u,
+        static_cast<unsigned int>(across.size()),
+        [&](const unsigned int begin, const unsigned int end) {
+          std::vector<types::global_dof_index> columns;
+          for (unsigned int a = begin; a < end; ++a)
+            {
+              auto &vertices = across[a];
+              if (vertices.empty())
+                continue;
+              std::sort(vertices.begin(), vertices.end());
+              vertices.erase(std::unique(vertices.begin(), vertices.end()),
+                             vertices.end());
+              columns.clear();
+              for (const unsigned int b : vertices)
+                for (const auto dof : surface.vertex_dofs[b])
+                  columns.push_back(dof);
+              std::sort(columns.begin(), columns.end());
+              for (const auto row : surface.vertex_dofs[a])
+                merge_columns(rows[row], columns);
+            }
+        },
+        256);
     }
 
 

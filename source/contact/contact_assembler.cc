@@ -98,12 +98,12 @@ namespace TissueContact
 
 
     void
-    ContactAssembler::add_couplings(const Vector<double>   &u,
-                                    const double            margin,
-                                    DynamicSparsityPattern &dsp) const
+    ContactAssembler::add_couplings(const Vector<double> &u,
+                                    const double          margin,
+                                    PatternRows          &rows) const
     {
       for (const auto *i : interactions)
-        i->add_couplings(u, margin, dsp);
+        i->add_couplings(u, margin, rows);
     }
 
 

@@ -2,6 +2,7 @@
 #include <tissue_contact/rigid/rotation.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/parallel.h>
 
 #include <algorithm>
 
@@ -196,52 +197,51 @@ namespace TissueContact
 
 
     void
-    FreeRigidBodies::add_couplings(const DynamicSparsityPattern &fe,
-                                   DynamicSparsityPattern       &full) const
+    FreeRigidBodies::add_couplings(PatternRows &rows) const
     {
-      AssertDimension(fe.n_rows(), n_fe);
-      full.reinit(n_dofs(), n_dofs());
-      // the entries (a, c) for a in targets(i), c in targets(j) of every
-      // entry (i, j) of @p fe, targets(i) being i and, for a node of a body,
-      // the body's six unknowns: row i's columns gathered and sorted once,
-      // and appended to the rows of i's body, which are sorted at the end
-      // (entry by entry this was a third of a pattern build on the coarse
-      // knee)
-      std::vector<std::vector<types::global_dof_index>> body_rows(
-        bodies.size());
-      std::vector<types::global_dof_index> columns;
-      for (types::global_dof_index i = 0; i < n_fe; ++i)
-        {
-          columns.clear();
-          for (auto e = fe.begin(i); e != fe.end(i); ++e)
+      AssertDimension(rows.size(), n_fe);
+      // row i gets the six unknowns of the body of every slave among its
+      // columns; they are numbered after all finite element DoFs and in
+      // the order of the bodies, so appended they keep the row sorted. The
+      // rows in parallel
+      parallel::apply_to_subranges(
+        types::global_dof_index(0),
+        n_fe,
+        [&](const types::global_dof_index begin,
+            const types::global_dof_index end) {
+          std::vector<bool> coupled(bodies.size());
+          for (types::global_dof_index i = begin; i < end; ++i)
             {
-              const types::global_dof_index j = e->column();
-              columns.push_back(j);
-              if (owner[j] >= 0)
-                for (unsigned int m = 0; m < 6; ++m)
-                  columns.push_back(first_unknown(owner[j]) + m);
+              std::fill(coupled.begin(), coupled.end(), false);
+              bool any = false;
+              for (const auto j : rows[i])
+                if (owner[j] >= 0)
+                  any = coupled[owner[j]] = true;
+              if (any)
+                for (unsigned int b = 0; b < bodies.size(); ++b)
+                  if (coupled[b])
+                    for (unsigned int m = 0; m < 6; ++m)
+                      rows[i].push_back(first_unknown(b) + m);
             }
-          std::sort(columns.begin(), columns.end());
-          columns.erase(std::unique(columns.begin(), columns.end()),
-                        columns.end());
-          full.add_entries(i, columns.begin(), columns.end(), true);
-          if (owner[i] >= 0)
-            body_rows[owner[i]].insert(body_rows[owner[i]].end(),
-                                       columns.begin(),
-                                       columns.end());
-        }
+        },
+        512);
+      // a body's six rows: the union of its slaves' rows (so far) and its
+      // own unknowns, marked in a flag per column and read off in order
+      std::vector<bool> marked(n_dofs());
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
-          auto &row = body_rows[b];
-          for (unsigned int l = 0; l < 6; ++l)
-            row.push_back(first_unknown(b) + l);
-          std::sort(row.begin(), row.end());
-          row.erase(std::unique(row.begin(), row.end()), row.end());
+          std::fill(marked.begin(), marked.end(), false);
+          for (const auto s : bodies[b].dofs)
+            for (const auto j : rows[s])
+              marked[j] = true;
           for (unsigned int m = 0; m < 6; ++m)
-            full.add_entries(first_unknown(b) + m,
-                             row.begin(),
-                             row.end(),
-                             true);
+            marked[first_unknown(b) + m] = true;
+          std::vector<types::global_dof_index> row;
+          for (types::global_dof_index j = 0; j < marked.size(); ++j)
+            if (marked[j])
+              row.push_back(j);
+          for (unsigned int m = 0; m < 6; ++m)
+            rows.push_back(row);
         }
     }
 

@@ -1,10 +1,10 @@
 #include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/base/pattern_rows.h>
 #include <tissue_contact/base/timing.h>
 #include <tissue_contact/simulation/problem.h>
 
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/grid/grid_tools.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <algorithm>
 #include <limits>
@@ -142,34 +142,21 @@ namespace TissueContact
       sparsity.copy_from(assembler.sparsity_pattern());
     else
       {
-        // the finite element pattern copied row by row from the one the
+        // the finite element pattern's rows copied from the one the
         // discretization built once (a fraction of the time of building it
-        // again from the cells: the knee-scale tube rebuilds its pattern
-        // 40 times as the skin's crease closes)
-        DynamicSparsityPattern               dsp(disc.n_dofs());
-        const SparsityPattern               &fe = assembler.sparsity_pattern();
-        std::vector<types::global_dof_index> columns;
-        for (types::global_dof_index row = 0; row < fe.n_rows(); ++row)
-          {
-            columns.clear();
-            for (auto entry = fe.begin(row); entry != fe.end(row); ++entry)
-              columns.push_back(entry->column());
-            std::sort(columns.begin(), columns.end());
-            dsp.add_entries(row, columns.begin(), columns.end(), true);
-          }
+        // again from the cells: the full knee rebuilds its pattern some 400
+        // times as its contact zones move), the contact couplings merged
+        // into them, the rigid bodies' rows added, and the rows written
+        // into the pattern at once
+        PatternRows rows = rows_of(assembler.sparsity_pattern());
         if (body_contact)
           contact->add_couplings(fe_displacement(u),
                                  0.5 * GridTools::minimal_cell_diameter(
                                          scene.triangulation),
-                                 dsp);
-        if (!rigid)
-          sparsity.copy_from(dsp);
-        else
-          {
-            DynamicSparsityPattern full;
-            rigid->add_couplings(dsp, full);
-            sparsity.copy_from(full);
-          }
+                                 rows);
+        if (rigid)
+          rigid->add_couplings(rows);
+        to_pattern(rows, sparsity);
       }
     assembler.use_matrix_pattern(sparsity);
   }

@@ -19,7 +19,6 @@
 
 #include <tissue_contact/contact/contact_assembler.h>
 
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -64,15 +63,15 @@ main(int argc, char **argv)
           << " degrees about " << std::setprecision(2) << theta / theta.norm()
           << std::endl;
 
-  const auto            &contact = *problem.contact_assembler();
-  const Vector<double>   x       = problem.displacement(u);
-  const auto             n       = x.size();
-  DynamicSparsityPattern dsp(n);
-  contact.add_couplings(x, 0.01, dsp);
+  const auto          &contact = *problem.contact_assembler();
+  const Vector<double> x       = problem.displacement(u);
+  const auto           n       = x.size();
+  PatternRows          rows(n);
   for (types::global_dof_index i = 0; i < n; ++i)
-    dsp.add(i, i);
+    rows[i].push_back(i);
+  contact.add_couplings(x, 0.01, rows);
   SparsityPattern pattern;
-  pattern.copy_from(dsp);
+  to_pattern(rows, pattern);
   // far away (every coordinate moved by 1 m: a new search), then back: a pass
   // over all candidates
   Vector<double> far(x);

@@ -66,9 +66,9 @@ namespace TissueContact
        * @p u whose boxes overlap after the triangle's box is enlarged by
        * @p margin. */
       void
-      add_couplings(const Vector<double>   &u,
-                    const double            margin,
-                    DynamicSparsityPattern &dsp) const override;
+      add_couplings(const Vector<double> &u,
+                    const double          margin,
+                    PatternRows          &rows) const override;
 
       /** Per declared pair: the force on its surface body (the triangle
        * vertices' share of @f$-\partial W/\partial x@f$), the area of its

@@ -44,9 +44,9 @@ namespace TissueContact
       energies(const Vector<double> &u) const override;
 
       void
-      add_couplings(const Vector<double>   &u,
-                    const double            margin,
-                    DynamicSparsityPattern &dsp) const override;
+      add_couplings(const Vector<double> &u,
+                    const double          margin,
+                    PatternRows          &rows) const override;
 
       bool
       has_couplings(const Vector<double>  &u,

@@ -1,8 +1,9 @@
 #pragma once
 
+#include <tissue_contact/base/pattern_rows.h>
+
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/timer.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -69,16 +70,16 @@ namespace TissueContact
               std::vector<Tensor<1, 3>> &surface_force,
               std::vector<double>       &penetration) const = 0;
 
-      /** Add to @p dsp the couplings the tangent may have at @p u (with a
-       * search margin @p margin); none by default. */
+      /** Add to @p rows (one per DoF) the couplings the tangent may have at
+       * @p u (with a search margin @p margin); none by default. */
       virtual void
-      add_couplings(const Vector<double>   &u,
-                    const double            margin,
-                    DynamicSparsityPattern &dsp) const
+      add_couplings(const Vector<double> &u,
+                    const double          margin,
+                    PatternRows          &rows) const
       {
         (void)u;
         (void)margin;
-        (void)dsp;
+        (void)rows;
       }
 
       /** Whether @p pattern holds every coupling the tangent has at @p u. */

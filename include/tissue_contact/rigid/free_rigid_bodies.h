@@ -1,9 +1,9 @@
 #pragma once
 
+#include <tissue_contact/base/pattern_rows.h>
 #include <tissue_contact/rigid/rotation.h>
 
 #include <deal.II/base/point.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -116,12 +116,12 @@ namespace TissueContact
                Vector<double>       &R,
                SparseMatrix<double> *K) const;
 
-      /** @p full (n_dofs() rows) = @p fe (n_fe rows) plus the couplings of
-       * every body's unknowns with each other and with every DoF coupled to
-       * one of its slaves. */
+      /** @p rows, the n_fe rows of the finite element pattern, extended to
+       * the n_dofs() rows of the condensed tangent: the couplings of every
+       * body's unknowns with each other and with every DoF coupled to one
+       * of its slaves added. */
       void
-      add_couplings(const DynamicSparsityPattern &fe,
-                    DynamicSparsityPattern       &full) const;
+      add_couplings(PatternRows &rows) const;
 
       /** A diagonal D_fe over the n_fe DoFs (the quasi-viscosity) as a
        * diagonal over n_dofs(): zero on slaves, diag(T^T D T) at q = 0 on
