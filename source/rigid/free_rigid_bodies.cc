@@ -41,6 +41,10 @@ namespace TissueContact
               slave_index[i] = k;
             }
         }
+      slaves.resize(bodies.size());
+      for (types::global_dof_index i = 0; i < n_fe; ++i)
+        if (owner[i] >= 0)
+          slaves[owner[i]].push_back(i);
     }
 
 
@@ -160,37 +164,60 @@ namespace TissueContact
       if (K == nullptr)
         return;
 
-      // K T: every slave column s moves to its body's columns, times J_s
-      for (types::global_dof_index i = 0; i < K->m(); ++i)
-        for (auto e = K->begin(i); e != K->end(i); ++e)
-          {
-            const auto j = e->column();
-            if (j >= n_fe || owner[j] < 0 || e->value() == 0.)
-              continue;
-            const double v = e->value();
-            e->value()     = 0.;
-            const auto &Js = J[owner[j]][slave_index[j]];
-            const auto  q  = first_unknown(owner[j]);
-            for (unsigned int m = 0; m < 6; ++m)
-              if (Js[m] != 0.)
-                K->add(i, q + m, v * Js[m]);
-          }
-      // T^T (K T): every slave row moves to its body's rows; then identity
-      for (types::global_dof_index s = 0; s < n_fe; ++s)
-        if (owner[s] >= 0)
-          {
-            const auto &Js = J[owner[s]][slave_index[s]];
-            const auto  q  = first_unknown(owner[s]);
-            for (auto e = K->begin(s); e != K->end(s); ++e)
+      // K T: every slave column s moves to its body's columns, times J_s;
+      // each row changes only itself: the rows in parallel
+      parallel::apply_to_subranges(
+        types::global_dof_index(0),
+        K->m(),
+        [&](const types::global_dof_index begin,
+            const types::global_dof_index end) {
+          for (types::global_dof_index i = begin; i < end; ++i)
+            for (auto e = K->begin(i); e != K->end(i); ++e)
               {
-                const double v = e->value();
-                if (v == 0.)
+                const auto j = e->column();
+                if (j >= n_fe || owner[j] < 0 || e->value() == 0.)
                   continue;
-                e->value() = 0.;
+                const double v = e->value();
+                e->value()     = 0.;
+                const auto &Js = J[owner[j]][slave_index[j]];
+                const auto  q  = first_unknown(owner[j]);
                 for (unsigned int m = 0; m < 6; ++m)
                   if (Js[m] != 0.)
-                    K->add(q + m, e->column(), Js[m] * v);
+                    K->add(i, q + m, v * Js[m]);
               }
+        },
+        256);
+      // T^T (K T): every slave row moves to its body's rows, then becomes
+      // the identity's. Each of a body's six rows gathers from all its
+      // slaves' rows, in the slaves' order (the sums as if done one after
+      // the other): the bodies' rows in parallel, then the slaves' rows
+      // cleared
+      const unsigned int n_rows = 6 * bodies.size();
+      parallel::apply_to_subranges(
+        0u,
+        n_rows,
+        [&](const unsigned int begin, const unsigned int end) {
+          for (unsigned int bm = begin; bm < end; ++bm)
+            {
+              const unsigned int b = bm / 6, m = bm % 6;
+              const auto         q = first_unknown(b);
+              for (const auto s : slaves[b])
+                {
+                  const double Jm = J[b][slave_index[s]][m];
+                  if (Jm == 0.)
+                    continue;
+                  for (auto e = K->begin(s); e != K->end(s); ++e)
+                    if (e->value() != 0.)
+                      K->add(q + m, e->column(), Jm * e->value());
+                }
+            }
+        },
+        1);
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        for (const auto s : slaves[b])
+          {
+            for (auto e = K->begin(s); e != K->end(s); ++e)
+              e->value() = 0.;
             K->set(s, s, 1.);
           }
     }
@@ -231,7 +258,7 @@ namespace TissueContact
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
           std::fill(marked.begin(), marked.end(), false);
-          for (const auto s : bodies[b].dofs)
+          for (const auto s : slaves[b])
             for (const auto j : rows[s])
               marked[j] = true;
           for (unsigned int m = 0; m < 6; ++m)

@@ -143,6 +143,8 @@ namespace TissueContact
       std::vector<int> owner;
       /** Per finite element DoF: its index in its body's Body::dofs. */
       std::vector<unsigned int> slave_index;
+      /** Per body: its slaves' DoFs in increasing order. */
+      std::vector<std::vector<types::global_dof_index>> slaves;
     };
   } // namespace Rigid
 } // namespace TissueContact
