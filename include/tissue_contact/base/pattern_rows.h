@@ -17,7 +17,8 @@ namespace TissueContact
    * contact pattern of the full knee is rebuilt some 400 times as the
    * contact zones move (doc/theory/05-contact.md sec. 7); built through
    * two DynamicSparsityPatterns, whose rows take columns one sorted
-   * insertion at a time, it cost 118 ms per build.
+   * insertion at a time, it cost 105 ms per build on the knee's first 8
+   * increments, and 77 ms with these rows.
    */
   using PatternRows = std::vector<std::vector<types::global_dof_index>>;
 
