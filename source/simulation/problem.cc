@@ -21,6 +21,8 @@ namespace TissueContact
            parameters.stiffness_quadrature == "reduced")
     , assembler(disc, scene.body_data(), scene.dead_loads())
     , prescribed(scene.prescribed_dofs(disc))
+    , coupling_margin(0.5 *
+                      GridTools::minimal_cell_diameter(scene.triangulation))
   {
     // contact only where the scene asks for it: no obstacle and no pair,
     // no contact search
@@ -150,10 +152,7 @@ namespace TissueContact
         // into the pattern at once
         PatternRows rows = rows_of(assembler.sparsity_pattern());
         if (body_contact)
-          contact->add_couplings(fe_displacement(u),
-                                 0.5 * GridTools::minimal_cell_diameter(
-                                         scene.triangulation),
-                                 rows);
+          contact->add_couplings(fe_displacement(u), coupling_margin, rows);
         if (rigid)
           rigid->add_couplings(rows);
         to_pattern(rows, sparsity);

@@ -19,7 +19,6 @@
 
 #include <tissue_contact/contact/contact_assembler.h>
 
-
 using namespace dealii;
 using namespace TissueContact;
 using namespace TissueContactTests;

@@ -257,5 +257,8 @@ namespace TissueContact
     TimerOutput                      *timer = nullptr;
     SparsityPattern                   sparsity;
     std::vector<Scene::PrescribedDof> prescribed;
+    /** The contact pattern's search margin: half the smallest cell
+     * diameter of the (fixed) reference mesh, found once. */
+    double coupling_margin = 0.;
   };
 } // namespace TissueContact
