@@ -15,6 +15,7 @@
 #include "../tests.h"
 
 #include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/base/nonzero_matrix.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/materials/mooney_rivlin.h>
 #include <tissue_contact/simulation/static_simulation.h>
@@ -662,6 +663,55 @@ namespace
             << std::isfinite(y.l2_norm()) << std::endl;
   }
 
+  // GMRES's operator, the tangent's nonzeros (doc/theory/04-solver.md,
+  // 4.5.2), on the 60 x 60 Laplacian with the off-diagonals of every 7th
+  // row and column zeroed as constrain_prescribed() leaves them: it keeps
+  // the nonzeros and every diagonal, and its products are those of the
+  // matrix bit for bit; taken again after other entries have become zero
+  // and zeros nonzero, the same.
+  void
+  nonzero_operator()
+  {
+    const Laplacian      laplacian(60);
+    const unsigned int   n          = laplacian.n;
+    SparseMatrix<double> A          = laplacian(10.);
+    const auto           zero_every = [&](const unsigned int p) {
+      std::size_t nonzeros = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        for (auto entry = A.begin(i); entry != A.end(i); ++entry)
+          {
+            if (entry->column() != i &&
+                (i % p == 0 || entry->column() % p == 0))
+              entry->value() = 0.;
+            nonzeros += (entry->value() != 0. || entry->column() == i);
+          }
+      return nonzeros;
+    };
+    Vector<double> x(n), y(n), z(n);
+    for (unsigned int k = 0; k < n; ++k)
+      x[k] = std::sin(0.37 * k) + 1e-3 * k;
+    NonzeroMatrix N;
+    const auto    same = [&]() {
+      A.vmult(y, x);
+      N.vmult(z, x);
+      for (unsigned int k = 0; k < n; ++k)
+        if (y[k] != z[k])
+          return false;
+      return true;
+    };
+    const std::size_t kept_7 = zero_every(7);
+    N.copy_from(A);
+    const bool same_7        = same() && N.n_nonzero_elements() == kept_7;
+    A                        = laplacian(10.);
+    const std::size_t kept_5 = zero_every(5);
+    N.copy_from(A);
+    deallog << "nonzero operator: " << N.n_nonzero_elements() << " of "
+            << A.n_nonzero_elements()
+            << " entries kept, products bit for bit: " << same_7
+            << ", again with other zeros: "
+            << (same() && N.n_nonzero_elements() == kept_5) << std::endl;
+  }
+
   void
   rigid_body()
   {
@@ -718,5 +768,6 @@ main(int argc, char **argv)
   forcing_term();
   kept_hierarchy();
   threaded_amg();
+  nonzero_operator();
   rigid_body();
 }
