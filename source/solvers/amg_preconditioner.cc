@@ -14,7 +14,8 @@ namespace TissueContact
     void
     AMGPreconditioner::initialize(const SparseMatrix<double> &A,
                                   const std::vector<double>  &null_space,
-                                  const unsigned int null_space_dimension)
+                                  const unsigned int null_space_dimension,
+                                  const bool         smoothed_aggregation)
     {
       // the copy first (the smoother and the hierarchy keep references),
       // without the entries that are stored but zero (doc/theory/
@@ -33,6 +34,8 @@ namespace TissueContact
       std::unique_ptr<Epetra_MultiVector> unused;
       amg_data.set_parameters(ml, unused, ml_matrix);
       ml.set("smoother: type (level 0)", "do-nothing");
+      if (!smoothed_aggregation)
+        ml.set("aggregation: damping factor", 0.);
       if (null_space_dimension > 0)
         {
           AssertDimension(null_space.size(), null_space_dimension * A.m());

@@ -58,6 +58,19 @@ namespace TissueContact
         "hierarchy's setup (2.5 s instead of 0.7 s per solve).",
         Patterns::Bool());
       prm.add_parameter(
+        "AMG aggregation",
+        amg_aggregation,
+        "For Type = GMRES+AMG: smoothed (the aggregates' tentative "
+        "prolongators smoothed by damped Jacobi, ML's default smoothed "
+        "aggregation) or plain (the tentative prolongators as they are: a "
+        "hierarchy built 2.4 times as fast, sparser coarse levels, more "
+        "iterations). Measured with two threads (doc/theory/04-solver.md "
+        "sec. 4.5.2): plain took the full knee (prm/knee_flexion.prm, which "
+        "sets it) from 464 s to 404-413 s, its linear solve from 237 s to "
+        "173-175 s; on the knee-scale tube (prm/knee_tube.prm) plain was 7 % "
+        "slower (one thread, side by side), on the falling rods the same.",
+        Patterns::Selection("plain|smoothed"));
+      prm.add_parameter(
         "Forcing term",
         forcing_term,
         "For the iterative solvers: fixed (every solve to Relative "
@@ -154,7 +167,10 @@ namespace TissueContact
       if (!amg)
         {
           amg = std::make_unique<AMGPreconditioner>();
-          amg->initialize(K, null_space, null_space_dimension);
+          amg->initialize(K,
+                          null_space,
+                          null_space_dimension,
+                          parameters.amg_aggregation == "smoothed");
           fresh_rate = -1.;
         }
       // fresh: no solve has measured this hierarchy's rate yet (a solve

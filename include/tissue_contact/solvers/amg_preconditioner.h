@@ -17,8 +17,8 @@ namespace TissueContact
     using namespace dealii;
 
     /**
-     * One V-cycle of smoothed-aggregation algebraic multigrid whose finest
-     * level runs on deal.II's threads (doc/theory/04-solver.md sec. 4.5.2).
+     * One V-cycle of aggregation algebraic multigrid whose finest level
+     * runs on deal.II's threads (doc/theory/04-solver.md sec. 4.5.2).
      *
      * Trilinos ML builds the hierarchy (aggregates, prolongators, coarse
      * operators and their Chebyshev smoothers) from a copy of the matrix
@@ -44,11 +44,17 @@ namespace TissueContact
        * with the project's ML settings (Chebyshev, 2 sweeps, aggregation
        * threshold 1e-4, the elliptic defaults) and the near-null space @p
        * null_space, @p null_space_dimension vectors of A.m() entries one
-       * after the other (none: ML's default). */
+       * after the other (none: ML's default). With @p smoothed_aggregation
+       * the prolongators are the tentative ones smoothed by damped Jacobi
+       * (ML's default, damping factor 4/3); without, the tentative ones as
+       * they are (plain aggregation: sparser coarse operators, a cheaper
+       * setup and cycle, more iterations; doc/theory/04-solver.md
+       * sec. 4.5.2). */
       void
       initialize(const SparseMatrix<double> &A,
                  const std::vector<double>  &null_space,
-                 const unsigned int          null_space_dimension);
+                 const unsigned int          null_space_dimension,
+                 const bool                  smoothed_aggregation);
 
       /** @p x = the V-cycle applied to @p b. */
       void

@@ -25,11 +25,11 @@ namespace TissueContact
      * - "direct": sparse LU, by UMFPACK or by MUMPS (through Trilinos
      *   Amesos; multifrontal, faster on large 3D meshes, see the entry
      *   "Direct solver");
-     * - "GMRES+AMG": GMRES preconditioned by Trilinos ML smoothed-aggregation
-     *   algebraic multigrid with the three translations, or the six
-     *   rigid-body modes (translations and rotations), as its near-null
-     *   space; the cycle's finest level runs on deal.II's threads
-     *   (AMGPreconditioner).
+     * - "GMRES+AMG": GMRES preconditioned by Trilinos ML aggregation
+     *   algebraic multigrid (plain or smoothed aggregation) with the three
+     *   translations, or the six rigid-body modes (translations and
+     *   rotations), as its near-null space; the cycle's finest level runs
+     *   on deal.II's threads (AMGPreconditioner).
      * Reaching the iteration cap is not an error (inexact Newton); a
      * non-finite solution is.
      */
@@ -46,6 +46,8 @@ namespace TissueContact
         double       relative_tolerance = 0.1;
         unsigned int max_iterations     = 1000;
         bool         amg_rotations      = false;
+        /** "plain" or "smoothed" aggregation (AMGPreconditioner). */
+        std::string amg_aggregation = "smoothed";
         /** "fixed" (relative_tolerance) or "Eisenstat-Walker". */
         std::string forcing_term = "fixed";
         /** Keep the AMG hierarchy from one solve to the next. */
