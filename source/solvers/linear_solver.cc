@@ -271,15 +271,16 @@ namespace TissueContact
       const std::string &type   = chosen.type;
       if (!from_x)
         x = 0.;
+      // GMRES, with either preconditioner, multiplies with the tangent's
+      // nonzeros: bit for bit the products with K, at 40 % of their cost on
+      // the full knee (doc/theory/04-solver.md sec. 4.5.2)
+      if (type != "direct")
+        nonzeros.copy_from(K);
       if (type == "direct")
         solve_direct(K, x, b);
       else if (type == "GMRES+AMG")
         {
           bool converged;
-          // GMRES multiplies with the tangent's nonzeros: bit for bit the
-          // products with K, at a quarter of their cost on the full knee
-          // (doc/theory/04-solver.md sec. 4.5.2)
-          nonzeros.copy_from(K);
           iterations = solve_amg(K, x, b, tolerance * b.l2_norm(), converged);
           // inexact Newton: the iterate after the cap is used as is, unless
           // the type was chosen automatically: then a system that a fresh
@@ -309,7 +310,7 @@ namespace TissueContact
             {
               PreconditionJacobi<SparseMatrix<double>> jacobi;
               jacobi.initialize(K);
-              gmres.solve(K, x, b, jacobi);
+              gmres.solve(nonzeros, x, b, jacobi);
             }
           catch (const SolverControl::NoConvergence &)
             {

@@ -200,7 +200,7 @@ namespace TissueContact
                 bool                       &converged) const;
 
       /** The tangent's nonzeros, GMRES's operator: the same products at
-       * a quarter of the cost on the full knee. */
+       * 40 % of the cost on the full knee (0.16 against 0.41 ms). */
       mutable NonzeroMatrix nonzeros;
 
       /** The hierarchy (with its copy of the matrix it was built from). */
