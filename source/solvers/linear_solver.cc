@@ -95,6 +95,19 @@ namespace TissueContact
         "(a reused hierarchy reaches 0.1 where a fresh one, nearly exact, "
         "went far below), hence off by default.",
         Patterns::Bool());
+      prm.add_parameter(
+        "GMRES restart",
+        gmres_restart,
+        "For the iterative solvers: Krylov vectors GMRES keeps before it "
+        "restarts (each holds one value per unknown), or 0: 150 with "
+        "GMRES+AMG and 50 with GMRES+Jacobi. A restart discards what the "
+        "basis has learnt, and an AMG iteration costs several products, so "
+        "a long basis pays: on 212 tangents of the full knee (every 8th "
+        "of a run, solved in its order), GMRES+AMG took 8 677 iterations and 29.9-31.2 "
+        "s restarted after 50 and 7 079 and 21.3-21.4 s after 150; a Jacobi "
+        "iteration costs one product, and its best restart is about 50 "
+        "(doc/theory/04-solver.md sec. 4.5.2).",
+        Patterns::Integer(0));
       prm.add_parameter("Relative tolerance",
                         relative_tolerance,
                         "Stop the iterative solvers when the linear "
@@ -201,7 +214,7 @@ namespace TissueContact
                                                  setup_cost - excess));
       SolverControl control(budget, target, false, false);
       SolverGMRES<Vector<double>>::AdditionalData data;
-      data.max_n_tmp_vectors = 52;
+      data.max_n_tmp_vectors = parameters.restart("GMRES+AMG") + 2;
       // right preconditioning: GMRES then minimizes and stops on the true
       // residual |K x - b|, the forcing condition of inexact Newton
       // (doc/theory/04-solver.md sec. 4.5.1); left preconditioning stops on
@@ -303,7 +316,7 @@ namespace TissueContact
                                 false,
                                 false);
           SolverGMRES<Vector<double>>::AdditionalData data;
-          data.max_n_tmp_vectors     = 52;
+          data.max_n_tmp_vectors     = parameters.restart("GMRES+Jacobi") + 2;
           data.right_preconditioning = true; // stop on |K x - b|, as above
           SolverGMRES<Vector<double>> gmres(control, data);
           try

@@ -588,6 +588,31 @@ namespace
             << "), residual below 1e-6: " << (r3 <= tol) << std::endl;
   }
 
+  // GMRES's restart (Linear solver/GMRES restart; doc/theory/04-solver.md,
+  // 4.5.2): GMRES+Jacobi on the 30 x 30 Laplacian to 1e-8, restarted after
+  // every 10 Krylov vectors, needs more iterations than with 150 kept, where
+  // it does not restart before it converges.
+  void
+  gmres_restart()
+  {
+    const Laplacian            laplacian(30);
+    const SparseMatrix<double> A = laplacian(1.);
+    Vector<double>             b(laplacian.n), x(laplacian.n), r(laplacian.n);
+    b = 1.;
+    Solvers::LinearSolver::Parameters p;
+    p.type          = "GMRES+Jacobi";
+    p.gmres_restart = 10;
+    const Solvers::LinearSolver restarted(p);
+    p.gmres_restart = 150;
+    const Solvers::LinearSolver kept(p);
+    const unsigned int          n_10  = restarted.solve(A, x, b, 1e-8);
+    const unsigned int          n_150 = kept.solve(A, x, b, 1e-8);
+    deallog << "GMRES restart: Jacobi iterations to 1e-8 restarted after 10 "
+            << n_10 << ", after 150 " << n_150 << "; fewer: " << (n_150 < n_10)
+            << "; residual below 1e-8: "
+            << (A.residual(r, x, b) <= 1e-8 * b.l2_norm()) << std::endl;
+  }
+
   // The V-cycle whose finest level runs on deal.II's threads (doc/theory/
   // 04-solver.md, 4.5.2) against ML's own cycle with the same settings, on
   // the 60 x 60 Laplacian with x couplings 10 times stronger: GMRES needs
@@ -775,6 +800,7 @@ main(int argc, char **argv)
   solvers_agree();
   forcing_term();
   kept_hierarchy();
+  gmres_restart();
   threaded_amg();
   nonzero_operator();
   rigid_body();

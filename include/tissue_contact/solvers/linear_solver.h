@@ -45,7 +45,23 @@ namespace TissueContact
         std::string  direct_solver      = "UMFPACK";
         double       relative_tolerance = 0.1;
         unsigned int max_iterations     = 1000;
-        bool         amg_rotations      = false;
+        /** Krylov vectors GMRES keeps before it restarts; 0: chosen by
+         * the preconditioner (restart()). */
+        unsigned int gmres_restart = 0;
+        /** GMRES's restart with the preconditioner of @p type
+         * ("GMRES+AMG" or "GMRES+Jacobi"): gmres_restart, or if that is 0
+         * the fastest measured (doc/theory/04-solver.md sec. 4.5.2): 150
+         * with AMG, whose iterations cost several products, so that a
+         * longer basis pays for its orthogonalization, and 50 with Jacobi,
+         * whose iterations cost one. */
+        unsigned int
+        restart(const std::string &type) const
+        {
+          return gmres_restart > 0   ? gmres_restart :
+                 type == "GMRES+AMG" ? 150 :
+                                       50;
+        }
+        bool amg_rotations = false;
         /** "plain" or "smoothed" aggregation (AMGPreconditioner). */
         std::string amg_aggregation = "smoothed";
         /** "fixed" (relative_tolerance) or "Eisenstat-Walker". */
