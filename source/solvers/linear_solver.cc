@@ -15,6 +15,27 @@ namespace TissueContact
 {
   namespace Solvers
   {
+    namespace
+    {
+      /** GMRES's settings with the preconditioner of @p type: its restart
+       * (LinearSolver::Parameters::restart()) and right preconditioning,
+       * so that GMRES minimizes and stops on the true residual |K x - b|,
+       * the forcing condition of inexact Newton (doc/theory/04-solver.md
+       * sec. 4.5.1); left preconditioning stops on |P^-1 (K x - b)|, which
+       * on the full knee fell by 10 while the true residual did not fall
+       * at all. */
+      SolverGMRES<Vector<double>>::AdditionalData
+      gmres_settings(const LinearSolver::Parameters &parameters,
+                     const std::string              &type)
+      {
+        SolverGMRES<Vector<double>>::AdditionalData data;
+        data.max_n_tmp_vectors     = parameters.restart(type) + 2;
+        data.right_preconditioning = true;
+        return data;
+      }
+    } // namespace
+
+
     void
     LinearSolver::Parameters::declare_parameters(ParameterHandler &prm)
     {
@@ -212,16 +233,10 @@ namespace TissueContact
                 std::min<unsigned int>(parameters.max_iterations,
                                        std::ceil(fresh_rate * decades +
                                                  setup_cost - excess));
-      SolverControl control(budget, target, false, false);
-      SolverGMRES<Vector<double>>::AdditionalData data;
-      data.max_n_tmp_vectors = parameters.restart("GMRES+AMG") + 2;
-      // right preconditioning: GMRES then minimizes and stops on the true
-      // residual |K x - b|, the forcing condition of inexact Newton
-      // (doc/theory/04-solver.md sec. 4.5.1); left preconditioning stops on
-      // |P^-1 (K x - b)|, which on the full knee fell by 10 while the true
-      // residual did not fall at all
-      data.right_preconditioning = true;
-      SolverGMRES<Vector<double>> gmres(control, data);
+      SolverControl               control(budget, target, false, false);
+      SolverGMRES<Vector<double>> gmres(control,
+                                        gmres_settings(parameters,
+                                                       "GMRES+AMG"));
       converged = true;
       try
         {
@@ -311,14 +326,13 @@ namespace TissueContact
         {
           // the target relative to |b|, not to the start's residual: the
           // same stop from x = 0, and no more than that from a given x
-          SolverControl control(parameters.max_iterations,
+          SolverControl               control(parameters.max_iterations,
                                 tolerance * b.l2_norm(),
                                 false,
                                 false);
-          SolverGMRES<Vector<double>>::AdditionalData data;
-          data.max_n_tmp_vectors     = parameters.restart("GMRES+Jacobi") + 2;
-          data.right_preconditioning = true; // stop on |K x - b|, as above
-          SolverGMRES<Vector<double>> gmres(control, data);
+          SolverGMRES<Vector<double>> gmres(control,
+                                            gmres_settings(parameters,
+                                                           "GMRES+Jacobi"));
           try
             {
               PreconditionJacobi<SparseMatrix<double>> jacobi;
