@@ -222,540 +222,647 @@ namespace TissueContact
         add_symmetric_outer(M, gV, sV, gV, sV, omega * vd.N / (Vv * Vv * Vv));
       }
 
-      /** A polygon vertex in closed form: @f$x = (1-s)x_{P_1} + s
-       * x_{P_2}@f$, @f$G = (1-s)G_1 + sG_2@f$, @f$s = a/(a-b)@f$ (a, b
-       * orientations) unless @p s_varies is false (a triangle vertex, or a
-       * degenerate cut where s is a constant). G_i is the depth of triangle
-       * vertex @p t_i if t_i < 3, else the constant @p G_const_i. */
-      struct VertexForm
+
+      /** Twice the triangle's area, @f$N = |N_T|@f$,
+       * @f$N_T = (t_1 - t_0)\times(t_2 - t_0)@f$, its unit normal and, on
+       * request, its gradient and Hessian in the triangle's 9 coordinates
+       * (points 4, 5, 6): @f$\partial N/\partial t_X = M_X^T\nu@f$ and
+       * @f$M_X^T(I - \nu\nu^T)M_Y/N@f$ plus the bilinear part of
+       * @f$N_T@f$ weighted by @f$\nu@f$, @f$M_X = \partial N_T/\partial
+       * t_X@f$. */
+      struct TriangleArea
       {
-        unsigned int P1 = 0, P2 = 0;
-        double       s        = 0.;
-        bool         s_varies = false;
-        Orientation  a, b;
-        double       s_a = 0., s_b = 0., s_aa = 0., s_ab = 0., s_bb = 0.;
-        Vec          grad_s;
-        unsigned int t1 = 3, t2 = 3;
-        double       G1 = 0., G2 = 0.;
-        Point<3>     x;
-        double       G = 0.;
+        double                                     N = 0.;
+        Tensor<1, 3>                               nu;
+        std::array<Tensor<1, 3>, 3>                gradient;
+        std::array<std::array<Tensor<2, 3>, 3>, 3> hessian;
+
+        explicit TriangleArea(const std::array<Point<3>, 3> &tri)
+        {
+          const Tensor<1, 3> NT =
+            cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]);
+          N  = NT.norm();
+          nu = NT / N;
+        }
+
+        void
+        derivatives(const std::array<Point<3>, 3> &tri, const bool hessian_too)
+        {
+          // M_X = [m_X]_x with the edge vectors m_X = t_{X+2} - t_{X+1}
+          const std::array<Tensor<1, 3>, 3> m = {
+            {tri[2] - tri[1], tri[0] - tri[2], tri[1] - tri[0]}};
+          std::array<Tensor<1, 3>, 3> nm; // M_X^T nu = nu x m_X
+          for (unsigned int X = 0; X < 3; ++X)
+            gradient[X] = nm[X] = cross_product_3d(nu, m[X]);
+          if (!hessian_too)
+            return;
+          // M_X^T (I - nu nu^T) M_Y / N = ((m_X . m_Y) I - m_Y m_X^T
+          // - (nu x m_X)(nu x m_Y)^T) / N, and the bilinear part
+          const Tensor<2, 3> Bn = -cross_matrix(nu);
+          for (unsigned int X = 0; X < 3; ++X)
+            for (unsigned int Y = 0; Y < 3; ++Y)
+              {
+                Tensor<2, 3> &h = hessian[X][Y];
+                h = -(outer_product(m[Y], m[X]) + outer_product(nm[X], nm[Y]));
+                const double mm = m[X] * m[Y];
+                for (unsigned int d = 0; d < 3; ++d)
+                  h[d][d] += mm;
+                h /= N;
+                if ((Y + 3 - X) % 3 == 1)
+                  h += Bn;
+                else if ((X + 3 - Y) % 3 == 1)
+                  h -= Bn;
+              }
+        }
       };
 
-      void
-      set_ratio(VertexForm &v, const Orientation &a, const Orientation &b)
+
+      /** The tetrahedron's barycentric functions
+       * @f$\lambda_j(y) = a_j\cdot y + b_j@f$ at the triangle's vertices:
+       * @f$\Lambda_{jt} = \lambda_j(t_t)@f$, and the depth field there,
+       * @f$G_t = \sum_j g_j\Lambda_{jt}@f$ (doc/theory/05-contact.md, sec.
+       * 5.1). */
+      struct Barycentric
       {
-        v.a            = a;
-        v.b            = b;
-        const double d = a.value - b.value;
-        v.s            = 0.;
-        if (d == 0.)
-          return;
-        v.s = a.value / d;
-        // rounding may disagree with the side decision: the cut then sits
-        // at the end point, as in intersect(), but s keeps the derivatives
-        // of a / (a - b), the one-sided derivatives in the clipping case
-        // intersect() chose (treating the clamped s as a constant dropped
-        // them: gradients off by up to 100 % on rotated degenerate pairs)
-        v.s        = std::clamp(v.s, 0., 1.);
-        v.s_varies = true;
-        v.s_a      = -b.value / (d * d);
-        v.s_b      = a.value / (d * d);
-        v.s_aa     = 2. * b.value / (d * d * d);
-        v.s_bb     = 2. * a.value / (d * d * d);
-        v.s_ab     = -(a.value + b.value) / (d * d * d);
-        v.grad_s.fill(0.);
-        add_gradient(v.grad_s, a, v.s_a);
-        add_gradient(v.grad_s, b, v.s_b);
+        std::array<Tensor<1, 3>, 4>          a;
+        std::array<std::array<double, 3>, 4> L;
+        std::array<double, 3>                G;
+
+        Barycentric(const Points &x, const std::array<double, 4> &g)
+        {
+          const Tensor<1, 3> e1 = x[1] - x[0], e2 = x[2] - x[0],
+                             e3 = x[3] - x[0];
+          const Tensor<1, 3> n1 = cross_product_3d(e2, e3);
+          const double       V  = e1 * n1;
+          a[1]                  = n1 / V;
+          a[2]                  = cross_product_3d(e3, e1) / V;
+          a[3]                  = cross_product_3d(e1, e2) / V;
+          a[0]                  = -(a[1] + a[2] + a[3]);
+          for (unsigned int t = 0; t < 3; ++t)
+            {
+              const Tensor<1, 3> r = x[4 + t] - x[0];
+              for (unsigned int j = 1; j < 4; ++j)
+                L[j][t] = r * a[j];
+              // lambda_0 measured from v_1, on its face: no cancellation
+              L[0][t] = (x[4 + t] - x[1]) * a[0];
+              G[t]    = g[0] * L[0][t] + g[1] * L[1][t] + g[2] * L[2][t] +
+                     g[3] * L[3][t];
+            }
+        }
+      };
+
+
+      /**
+       * A polygon vertex in the triangle's barycentric coordinates
+       * @f$\zeta@f$, from its clipping labels: a triangle vertex
+       * (@f$\zeta = e_t@f$, constant), a triangle edge @f$t_at_b@f$ cut by
+       * face i (@f$\zeta = (1-s)e_a + s e_b@f$,
+       * @f$s = \Lambda_{ia}/(\Lambda_{ia} - \Lambda_{ib})@f$), or the
+       * tetrahedron edge on faces i and j cut by the triangle's plane
+       * (@f$\zeta = c/\sigma@f$, @f$c = \Lambda_i\times\Lambda_j@f$ of the
+       * rows i, j of @f$\Lambda@f$, @f$\sigma = \mathbf 1\cdot c@f$). Its
+       * parameters (none, s, or the three components of @f$\zeta@f$) start
+       * at index @p p.
+       */
+      struct ZetaVertex
+      {
+        enum Kind
+        {
+          fixed,
+          edge_cut,
+          plane_cut
+        } kind;
+        Tensor<1, 3> zeta;
+        unsigned int p, n_p;
+        // edge_cut: ta, tb, face i and the derivatives of s in
+        // A = Lambda_{i ta}, B = Lambda_{i tb}
+        unsigned int i, j, ta, tb;
+        double       s_A, s_B, s_AA, s_AB, s_BB;
+        // plane_cut: faces i and j, sigma and the derivatives of sigma and
+        // zeta in (u_0, u_1, u_2, w_0, w_1, w_2), u = Lambda_i, w = Lambda_j
+        double                               sigma;
+        std::array<double, 6>                dsigma;
+        std::array<std::array<double, 3>, 6> dzeta;
+      };
+
+      /** @f$\zeta@f$ of a point of the triangle's plane (area ratios) */
+      Tensor<1, 3>
+      zeta_of(const Points &x, const TriangleArea &area, const Point<3> &y)
+      {
+        Tensor<1, 3> z;
+        for (unsigned int t = 0; t < 3; ++t)
+          z[t] =
+            cross_product_3d(x[4 + (t + 1) % 3] - y, x[4 + (t + 2) % 3] - y) *
+            area.nu / area.N;
+        return z;
       }
-    } // namespace
 
-
-    namespace
-    {
-      /** Stage 1 of the kernel: the m polygon vertices in closed form from
-       * their clipping labels (doc/theory/05-contact.md, sec. 5.1): a
-       * triangle vertex, a triangle edge cut by a tetrahedron face, or a
-       * tetrahedron edge cut by the triangle's plane; x = (1-s) x_P1 + s
-       * x_P2 and G = (1-s) G_1 + s G_2. */
-      void
+      /** Stage 1: the polygon's vertices in closed form from their labels;
+       * returns the number of parameters (the last three, G, included). */
+      unsigned int
       polygon_vertices(const IntersectionPolygon<double> &polygon,
                        const Points                      &x,
-                       const std::array<VertexDepth, 3>  &depth,
-                       const std::array<double, 4>       &g,
-                       std::array<VertexForm, 9>         &form)
+                       const Barycentric                 &bary,
+                       const TriangleArea                &area,
+                       std::array<ZetaVertex, 9>         &form)
       {
+        const auto        &L = bary.L;
+        unsigned int       p = 0;
         const unsigned int m = polygon.n_vertices;
         for (unsigned int k = 0; k < m; ++k)
           {
-            VertexForm  &v  = form[k];
+            ZetaVertex  &v  = form[k];
             unsigned int c1 = polygon.vertex[k].on[0],
                          c2 = polygon.vertex[k].on[1];
             if (c1 > c2)
               std::swap(c1, c2);
+            v.kind = ZetaVertex::fixed;
+            v.zeta = Tensor<1, 3>();
             if (c2 < 3)
-              {
-                // two triangle edges: a triangle vertex
-                const unsigned int t = (c2 == c1 + 1) ? c2 : 0;
-                v.P1 = v.P2 = 4 + t;
-                v.t1 = v.t2 = t;
-              }
+              // two triangle edges: a triangle vertex
+              v.zeta[(c2 == c1 + 1) ? c2 : 0] = 1.;
             else if (c1 < 3)
               {
-                // triangle edge c1 cut by face i: s from D_i at its ends
-                const unsigned int ta = c1, tb = (c1 + 1) % 3, i = c2 - 3;
-                v.P1 = 4 + ta;
-                v.P2 = 4 + tb;
-                v.t1 = ta;
-                v.t2 = tb;
-                set_ratio(v, depth[ta].D[i], depth[tb].D[i]);
+                // triangle edge c1 cut by face i
+                v.ta           = c1;
+                v.tb           = (c1 + 1) % 3;
+                v.i            = c2 - 3;
+                const double A = L[v.i][v.ta], B = L[v.i][v.tb], d = A - B;
+                double       s = 0.;
+                if (d != 0.)
+                  {
+                    // rounding may disagree with the side decision: the cut
+                    // then sits at the end point, as in intersect(), but s
+                    // keeps the derivatives of A / (A - B), the one-sided
+                    // derivatives of the clipping case intersect() chose
+                    s      = std::clamp(A / d, 0., 1.);
+                    v.kind = ZetaVertex::edge_cut;
+                    v.s_A  = -B / (d * d);
+                    v.s_B  = A / (d * d);
+                    v.s_AA = 2. * B / (d * d * d);
+                    v.s_BB = 2. * A / (d * d * d);
+                    v.s_AB = -(A + B) / (d * d * d);
+                  }
+                v.zeta[v.ta] = 1. - s;
+                v.zeta[v.tb] = s;
               }
             else
               {
-                // faces i and j: the tetrahedron edge p q cut by the
-                // triangle's plane
-                unsigned int p = 4, q = 4;
-                for (unsigned int r = 0; r < 4; ++r)
-                  if (r != c1 - 3 && r != c2 - 3)
-                    (p == 4 ? p : q) = r;
-                v.P1 = p;
-                v.P2 = q;
-                v.G1 = g[p];
-                v.G2 = g[q];
-                set_ratio(v,
-                          orientation(x, {{4, 5, 6, p}}),
-                          orientation(x, {{4, 5, 6, q}}));
+                // faces i and j: the tetrahedron edge p q between them cut
+                // by the triangle's plane
+                v.i = c1 - 3;
+                v.j = c2 - 3;
+                const Tensor<1, 3> u({L[v.i][0], L[v.i][1], L[v.i][2]}),
+                  w({L[v.j][0], L[v.j][1], L[v.j][2]});
+                const Tensor<1, 3> c = cross_product_3d(u, w);
+                v.sigma              = c[0] + c[1] + c[2];
+                if (v.sigma != 0.)
+                  {
+                    v.kind = ZetaVertex::plane_cut;
+                    v.zeta = c / v.sigma;
+                    // where rounding puts the cut beyond the edge's end
+                    // (lambda of an end point below zero), its value is the
+                    // clipping's point, its derivatives those of c / sigma
+                    unsigned int q = 4;
+                    for (unsigned int r = 0; r < 4; ++r)
+                      if (r != v.i && r != v.j)
+                        q = r;
+                    const double lq =
+                      (L[q][0] * c[0] + L[q][1] * c[1] + L[q][2] * c[2]) /
+                      v.sigma;
+                    if (lq < 0. || lq > 1.)
+                      v.zeta = zeta_of(x, area, polygon.vertex[k].x);
+                    for (unsigned int t = 0; t < 3; ++t)
+                      {
+                        Tensor<1, 3> e;
+                        e[t]                   = 1.;
+                        const Tensor<1, 3> dcu = cross_product_3d(e, w),
+                                           dcw = cross_product_3d(u, e);
+                        v.dsigma[t]            = dcu[0] + dcu[1] + dcu[2];
+                        v.dsigma[3 + t]        = dcw[0] + dcw[1] + dcw[2];
+                        for (unsigned int e = 0; e < 3; ++e)
+                          {
+                            v.dzeta[t][e] =
+                              (dcu[e] - v.dsigma[t] * v.zeta[e]) / v.sigma;
+                            v.dzeta[3 + t][e] =
+                              (dcw[e] - v.dsigma[3 + t] * v.zeta[e]) / v.sigma;
+                          }
+                      }
+                  }
+                else
+                  // the edge in the plane: the clipping's point, held fixed
+                  v.zeta = zeta_of(x, area, polygon.vertex[k].x);
               }
-            if (v.t1 < 3)
-              {
-                v.G1 = depth[v.t1].G;
-                v.G2 = depth[v.t2].G;
-              }
-            v.x = x[v.P1] + v.s * (x[v.P2] - x[v.P1]);
-            v.G = (1. - v.s) * v.G1 + v.s * v.G2;
+            v.p   = p;
+            v.n_p = v.kind == ZetaVertex::edge_cut  ? 1 :
+                    v.kind == ZetaVertex::plane_cut ? 3 :
+                                                      0;
+            p += v.n_p;
           }
+        return p + 3;
       }
 
 
-      /** The triangle's unit normal nu = N_T / |N_T| and, once the energy
-       * is known to be nonzero, its derivatives: N_T's in the triangle
-       * vertices M_X, dnu/dN_T = (I - nu nu^T) / |N_T| and dnu/dt_X. */
-      struct TriangleNormal
-      {
-        Tensor<1, 3>                nu;
-        double                      rT = 0.;
-        std::array<Tensor<2, 3>, 3> M;
-        Tensor<2, 3>                Pnu;
-        std::array<Tensor<2, 3>, 3> dnu;
-
-        explicit TriangleNormal(const std::array<Point<3>, 3> &tri)
-        {
-          const Tensor<1, 3> NT =
-            cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]);
-          rT = NT.norm();
-          nu = NT / rT;
-        }
-
-        void
-        derivatives(const std::array<Point<3>, 3> &tri)
-        {
-          M[1] = -cross_matrix(tri[2] - tri[0]);
-          M[2] = cross_matrix(tri[1] - tri[0]);
-          M[0] = -(M[1] + M[2]);
-          Pnu  = -outer_product(nu, nu);
-          for (unsigned int d = 0; d < 3; ++d)
-            Pnu[d][d] += 1.;
-          Pnu /= rT;
-          for (unsigned int X = 0; X < 3; ++X)
-            dnu[X] = Pnu * M[X];
-        }
-      };
-
-
-      /** Stage 2: the fan integral W = c sum_k l_k Q_k, l_k = n_k . nu, and
-       * its gradient w and Hessian HP in the primitives: (x, G) of each
-       * polygon vertex (4 per vertex), then nu (3). */
+      /** The fan integral and its derivatives in the parameters: the
+       * vertices' s or zeta, then G (3). */
       struct FanIntegral
       {
-        unsigned int                           m = 0, inu = 0, np = 0;
-        double                                 energy = 0.;
-        std::array<double, 39>                 w{};
-        std::array<std::array<double, 39>, 39> HP;
+        unsigned int                           n_p = 0;
+        double                                 Phi = 0.;
+        std::array<double, 24>                 g{};
+        std::array<std::array<double, 24>, 24> H;
       };
 
+      /** Column c of the basis B_k of a vertex's parameters in zeta:
+       * @f$e_{t_b} - e_{t_a}@f$ for an edge cut, @f$e_c@f$ for a plane cut. */
+      inline Tensor<1, 3>
+      basis(const ZetaVertex &v, const unsigned int c)
+      {
+        Tensor<1, 3> b;
+        if (v.kind == ZetaVertex::edge_cut)
+          {
+            b[v.tb] = 1.;
+            b[v.ta] = -1.;
+          }
+        else
+          b[c] = 1.;
+        return b;
+      }
+
+      /** @f$B_k(:, c)\cdot y@f$ */
+      inline double
+      project(const ZetaVertex &v, const unsigned int c, const Tensor<1, 3> &y)
+      {
+        return v.kind == ZetaVertex::edge_cut ? y[v.tb] - y[v.ta] : y[c];
+      }
+
+      /**
+       * Stage 2: @f$\Phi = \sum_k d_k Q_k@f$ over the fan triangles
+       * @f$(\zeta_0, \zeta_k, \zeta_{k+1})@f$, @f$d_k = \det[\zeta_0,
+       * \zeta_k, \zeta_{k+1}]@f$, @f$Q_k = \tfrac12 h^TEh@f$ with
+       * @f$h = (G\cdot\zeta_0, G\cdot\zeta_k, G\cdot\zeta_{k+1})@f$, and its
+       * gradient and Hessian in the parameters: the derivatives in the rows
+       * @f$z_r@f$ of the fan triangle (sec. 5.1) projected on each row's
+       * parameter basis.
+       */
       void
-      fan_integral(const std::array<VertexForm, 9> &form,
+      fan_integral(const std::array<ZetaVertex, 9> &form,
                    const unsigned int               m,
-                   const TriangleNormal            &normal,
-                   const double                     eps_p,
+                   const Barycentric               &bary,
                    const bool                       with_hessian,
                    FanIntegral                     &fan)
       {
-        const Tensor<1, 3> &nu = normal.nu;
-        const double        c  = eps_p / 24.;
-        fan.m                  = m;
-        fan.inu                = 4 * m;
-        fan.np                 = 4 * m + 3;
-        const unsigned int inu = fan.inu, np = fan.np;
-        auto              &w      = fan.w;
-        auto              &HP     = fan.HP;
-        double            &energy = fan.energy;
-        // the first np rows whole: one contiguous block, cheaper to zero
-        // than np pieces of np entries
+        const unsigned int iG = fan.n_p - 3;
+        const Tensor<1, 3> G({bary.G[0], bary.G[1], bary.G[2]});
         if (with_hessian)
-          std::memset(HP.data(), 0, np * sizeof(HP[0]));
+          for (unsigned int a = 0; a < fan.n_p; ++a)
+            std::fill(fan.H[a].begin(), fan.H[a].begin() + fan.n_p, 0.);
         for (unsigned int k = 1; k + 1 < m; ++k)
           {
-            const std::array<unsigned int, 3> vtx = {{0, k, k + 1}};
-            const Tensor<1, 3>                e1  = form[k].x - form[0].x,
-                               e2                 = form[k + 1].x - form[0].x;
-            const Tensor<1, 3> nk                 = cross_product_3d(e1, e2);
-            const double       l                  = nk * nu;
-            const double GA = form[0].G, GB = form[k].G, GC = form[k + 1].G;
-            const double Q =
-              GA * GA + GB * GB + GC * GC + GA * GB + GB * GC + GC * GA;
-            const std::array<double, 3> dQ = {
-              {2 * GA + GB + GC, 2 * GB + GA + GC, 2 * GC + GA + GB}};
-            energy += c * l * Q;
-            // dl/dx_X = N_X^T nu with N_X = dn_k/dx_X
-            std::array<Tensor<1, 3>, 3> dl;
-            dl[1] = cross_product_3d(e2, nu);
-            dl[2] = cross_product_3d(nu, e1);
-            dl[0] = -(dl[1] + dl[2]);
-            for (unsigned int X = 0; X < 3; ++X)
-              {
-                for (unsigned int d = 0; d < 3; ++d)
-                  w[4 * vtx[X] + d] += c * Q * dl[X][d];
-                w[4 * vtx[X] + 3] += c * l * dQ[X];
-              }
-            for (unsigned int d = 0; d < 3; ++d)
-              w[inu + d] += c * Q * nk[d];
+            const std::array<const ZetaVertex *, 3> v = {
+              {&form[0], &form[k], &form[k + 1]}};
+            const std::array<Tensor<1, 3>, 3> z = {
+              {v[0]->zeta, v[1]->zeta, v[2]->zeta}};
+            // d_r = dd/dz_r: the cross product of the other two rows
+            const std::array<Tensor<1, 3>, 3> dd = {
+              {cross_product_3d(z[1], z[2]),
+               cross_product_3d(z[2], z[0]),
+               cross_product_3d(z[0], z[1])}};
+            const double                d  = z[0] * dd[0];
+            const std::array<double, 3> h  = {{G * z[0], G * z[1], G * z[2]}};
+            const double                hs = h[0] + h[1] + h[2];
+            const std::array<double, 3> Eh = {
+              {hs + h[0], hs + h[1], hs + h[2]}};
+            const double Q = 0.5 * (Eh[0] * h[0] + Eh[1] * h[1] + Eh[2] * h[2]);
+            fan.Phi += d * Q;
+            // dQ/dG = Z^T E h
+            const Tensor<1, 3> mG = Eh[0] * z[0] + Eh[1] * z[1] + Eh[2] * z[2];
+            // per row r and parameter a: b . d_r, b . G, b . dPhi/dz_r
+            std::array<std::array<double, 3>, 3> bd, bG;
+            for (unsigned int r = 0; r < 3; ++r)
+              for (unsigned int a = 0; a < v[r]->n_p; ++a)
+                {
+                  bd[r][a] = project(*v[r], a, dd[r]);
+                  bG[r][a] = project(*v[r], a, G);
+                  fan.g[v[r]->p + a] += Q * bd[r][a] + d * Eh[r] * bG[r][a];
+                }
+            for (unsigned int t = 0; t < 3; ++t)
+              fan.g[iG + t] += d * mG[t];
             if (!with_hessian)
               continue;
-            std::array<Tensor<2, 3>, 3> Nx;
-            Nx[1] = -cross_matrix(e2);
-            Nx[2] = cross_matrix(e1);
-            Nx[0] = -(Nx[1] + Nx[2]);
-            // l is bilinear in (e1, e2): d2l = nu . (de1 x de2), the blocks
-            // (A,B), (B,C), (C,A) are -[nu]_x, their transposes [nu]_x
-            const Tensor<2, 3> Bm = -cross_matrix(nu);
-            for (unsigned int X = 0; X < 3; ++X)
-              {
-                const unsigned int i = 4 * vtx[X];
-                for (unsigned int Y = 0; Y < 3; ++Y)
-                  {
-                    const unsigned int j    = 4 * vtx[Y];
-                    const double       sign = (Y + 3 - X) % 3 == 1 ? 1. :
-                                              (X + 3 - Y) % 3 == 1 ? -1. :
-                                                                     0.;
-                    for (unsigned int p = 0; p < 3; ++p)
-                      {
-                        if (sign != 0.)
-                          for (unsigned int q = 0; q < 3; ++q)
-                            HP[i + p][j + q] += sign * c * Q * Bm[p][q];
-                        HP[i + p][j + 3] += c * dl[X][p] * dQ[Y];
-                        HP[j + 3][i + p] += c * dl[X][p] * dQ[Y];
-                      }
-                    HP[i + 3][j + 3] += c * l * (X == Y ? 2. : 1.);
-                  }
-                // (x_X, nu): c Q N_X^T; (G_X, nu): c dQ_X n_k
-                for (unsigned int p = 0; p < 3; ++p)
-                  for (unsigned int q = 0; q < 3; ++q)
+            // (E Z)_r = z_r + sum of the rows
+            const Tensor<1, 3> zs = z[0] + z[1] + z[2];
+            for (unsigned int r = 0; r < 3; ++r)
+              for (unsigned int a = 0; a < v[r]->n_p; ++a)
+                {
+                  auto &row = fan.H[v[r]->p + a];
+                  // rows (r, s): Eh_s (b.d_r)(G.b') + Eh_r (b.G)(d_s.b')
+                  // + d E_rs (b.G)(G.b') + Q b^T (d2 det / dz_r dz_s) b'
+                  for (unsigned int s = 0; s < 3; ++s)
                     {
-                      HP[i + p][inu + q] += c * Q * Nx[X][q][p];
-                      HP[inu + q][i + p] += c * Q * Nx[X][q][p];
+                      if (v[s]->n_p == 0)
+                        continue;
+                      // d2 det / dz_r dz_s = -[z_t]_x (s = r + 1), its
+                      // transpose (s = r + 2): b^T(-[z_t]_x)b' = -b.(z_t x b')
+                      const unsigned int t =
+                        s == (r + 1) % 3 ? (r + 2) % 3 : (r + 1) % 3;
+                      const double sign = s == (r + 1) % 3 ? -1. :
+                                          s == r           ? 0. :
+                                                             1.;
+                      for (unsigned int c = 0; c < v[s]->n_p; ++c)
+                        {
+                          double hv =
+                            Eh[s] * bd[r][a] * bG[s][c] +
+                            Eh[r] * bG[r][a] * bd[s][c] +
+                            d * (r == s ? 2. : 1.) * bG[r][a] * bG[s][c];
+                          if (sign != 0.)
+                            hv +=
+                              sign * Q *
+                              project(*v[r],
+                                      a,
+                                      cross_product_3d(z[t], basis(*v[s], c)));
+                          row[v[s]->p + c] += hv;
+                        }
                     }
-                for (unsigned int q = 0; q < 3; ++q)
-                  {
-                    HP[i + 3][inu + q] += c * dQ[X] * nk[q];
-                    HP[inu + q][i + 3] += c * dQ[X] * nk[q];
-                  }
-              }
+                  // (r, G): (b.d_r) mG + d (b.G)(z_r + zs) + d Eh_r b
+                  const Tensor<1, 3> b  = basis(*v[r], a);
+                  const Tensor<1, 3> rG = bd[r][a] * mG +
+                                          (d * bG[r][a]) * (z[r] + zs) +
+                                          (d * Eh[r]) * b;
+                  for (unsigned int e = 0; e < 3; ++e)
+                    {
+                      row[iG + e] += rG[e];
+                      fan.H[iG + e][v[r]->p + a] += rG[e];
+                    }
+                }
+            // (G, G): d Z^T E Z = d (sum_r z_r z_r^T + zs zs^T)
+            const Tensor<2, 3> MG =
+              d * (outer_product(z[0], z[0]) + outer_product(z[1], z[1]) +
+                   outer_product(z[2], z[2]) + outer_product(zs, zs));
+            for (unsigned int a = 0; a < 3; ++a)
+              for (unsigned int b = 0; b < 3; ++b)
+                fan.H[iG + a][iG + b] += MG[a][b];
           }
       }
 
 
-      /** The weights the chain rule needs twice: omega_t of the depths G_t
-       * of the triangle vertices and sigma_k = dW/ds_k of the cut ratios. */
-      struct ChainWeights
+      /** The Jacobian of the parameters in Lambda (index 3 j + t): at most
+       * six entries per parameter. */
+      struct ParameterJacobian
       {
-        std::array<double, 3> omega{};
-        std::array<double, 9> sigma{};
-      };
-
-      /** Stage 3: the gradient in the 21 coordinates by the chain rule
-       * through the polygon vertices, the depths G_t and the normal. */
-      void
-      chain_gradient(const std::array<VertexForm, 9>  &form,
-                     const Points                     &x,
-                     const std::array<VertexDepth, 3> &depth,
-                     const TriangleNormal             &normal,
-                     const FanIntegral                &fan,
-                     ChainWeights                     &cw,
-                     Vec                              &grad)
-      {
-        const unsigned int m = fan.m, inu = fan.inu;
-        const auto        &w     = fan.w;
-        auto              &omega = cw.omega;
-        auto              &sigma = cw.sigma;
-        const auto        &dnu   = normal.dnu;
-        grad.fill(0.);
-        for (unsigned int k = 0; k < m; ++k)
-          {
-            const VertexForm &v = form[k];
-            for (unsigned int d = 0; d < 3; ++d)
-              {
-                grad[3 * v.P1 + d] += (1. - v.s) * w[4 * k + d];
-                grad[3 * v.P2 + d] += v.s * w[4 * k + d];
-              }
-            const double wG = w[4 * k + 3];
-            if (v.t1 < 3)
-              {
-                omega[v.t1] += (1. - v.s) * wG;
-                omega[v.t2] += v.s * wG;
-              }
-            if (v.s_varies)
-              {
-                sigma[k] = wG * (v.G2 - v.G1);
-                for (unsigned int d = 0; d < 3; ++d)
-                  sigma[k] += w[4 * k + d] * (x[v.P2][d] - x[v.P1][d]);
-                for (unsigned int i = 0; i < n; ++i)
-                  grad[i] += sigma[k] * v.grad_s[i];
-              }
-          }
-        for (unsigned int t = 0; t < 3; ++t)
-          if (omega[t] != 0.)
-            for (unsigned int i = 0; i < n; ++i)
-              grad[i] += omega[t] * depth[t].grad_G[i];
-        const Tensor<1, 3> w_nu({w[inu], w[inu + 1], w[inu + 2]});
-        for (unsigned int X = 0; X < 3; ++X)
-          {
-            const Tensor<1, 3> gX = transpose(dnu[X]) * w_nu;
-            for (unsigned int d = 0; d < 3; ++d)
-              grad[3 * (4 + X) + d] += gX[d];
-          }
-      }
-
-
-      /** Stage 4: the Hessian by the chain rule in two levels
-       * (doc/theory/05-contact.md, sec. 5.1, level 2): the primitives are
-       * simple functions of z = (the 21 coordinates, the cut ratios s_k,
-       * the depths G_t, the normal nu), z of the coordinates; H = Z^T Hz Z
-       * plus the first-derivative terms of s_k, G_t and nu. */
-      void
-      chain_hessian(const std::array<VertexForm, 9>  &form,
-                    const Points                     &x,
-                    const Orientation                &V,
-                    const std::array<VertexDepth, 3> &depth,
-                    const std::array<double, 4>      &g,
-                    const TriangleNormal             &normal,
-                    const FanIntegral                &fan,
-                    const ChainWeights               &cw,
-                    Mat                              &H)
-      {
-        const unsigned int m = fan.m, inu = fan.inu, np = fan.np;
-        const auto        &w     = fan.w;
-        const auto        &HP    = fan.HP;
-        const auto        &omega = cw.omega;
-        const auto        &sigma = cw.sigma;
-        const auto        &nu    = normal.nu;
-        const double       rT    = normal.rT;
-        const auto        &M     = normal.M;
-        const auto        &Pnu   = normal.Pnu;
-        const auto        &dnu   = normal.dnu;
-        const Tensor<1, 3> w_nu({w[inu], w[inu + 1], w[inu + 2]});
-
-        // z: the 21 coordinates, then s_k (k < m), G_t (t < 3), nu (3)
-        const unsigned int zs = n, zG = n + m, znu = n + m + 3,
-                           q = m + 6; // the z beyond the coordinates
-        // dz/dprimitive: at most 3 (z, coefficient) entries per primitive
         struct Entry
         {
-          unsigned int z;
+          unsigned int alpha;
           double       c;
         };
-        std::array<std::array<Entry, 3>, 39> L;
-        std::array<unsigned int, 39>         nL{};
-        for (unsigned int k = 0; k < m; ++k)
-          {
-            const VertexForm &v = form[k];
-            for (unsigned int d = 0; d < 3; ++d)
-              {
-                auto &e = L[4 * k + d];
-                auto &l = nL[4 * k + d];
-                e[l++]  = {3 * v.P1 + d, 1. - v.s};
-                if (v.P2 != v.P1)
-                  e[l++] = {3 * v.P2 + d, v.s};
-                if (v.s_varies)
-                  e[l++] = {zs + k, x[v.P2][d] - x[v.P1][d]};
-              }
-            auto &e = L[4 * k + 3];
-            auto &l = nL[4 * k + 3];
-            if (v.t1 < 3)
-              {
-                e[l++] = {zG + v.t1, 1. - v.s};
-                if (v.t2 != v.t1)
-                  e[l++] = {zG + v.t2, v.s};
-              }
-            if (v.s_varies)
-              e[l++] = {zs + k, v.G2 - v.G1};
-          }
-        for (unsigned int d = 0; d < 3; ++d)
-          {
-            L[inu + d][0] = {znu + d, 1.};
-            nL[inu + d]   = 1;
-          }
+        std::array<std::array<Entry, 6>, 24> J;
+        std::array<unsigned int, 24>         n{};
 
-        // Hz = (dprimitive/dz)^T HP (dprimitive/dz) + the primitives'
-        // second derivatives in z, weighted by w: x_k and G_k are bilinear
-        // in s_k and their end values
-        std::array<std::array<double, 36>, 36> Hz;
-        const unsigned int                     nz = n + q;
-        std::memset(Hz.data(), 0, nz * sizeof(Hz[0])); // nz whole rows
-        for (unsigned int a = 0; a < np; ++a)
-          for (unsigned int b = 0; b < np; ++b)
-            {
-              const double h = HP[a][b];
-              if (h == 0.)
-                continue;
-              for (unsigned int p = 0; p < nL[a]; ++p)
-                {
-                  const double ha  = L[a][p].c * h;
-                  auto        &row = Hz[L[a][p].z];
-                  for (unsigned int r = 0; r < nL[b]; ++r)
-                    row[L[b][r].z] += ha * L[b][r].c;
-                }
-            }
-        for (unsigned int k = 0; k < m; ++k)
-          {
-            const VertexForm &v = form[k];
-            if (!v.s_varies)
-              continue;
-            const auto add = [&](const unsigned int j, const double c) {
-              Hz[zs + k][j] += c;
-              Hz[j][zs + k] += c;
-            };
-            for (unsigned int d = 0; d < 3; ++d)
-              {
-                add(3 * v.P2 + d, w[4 * k + d]);
-                add(3 * v.P1 + d, -w[4 * k + d]);
-              }
-            if (v.t1 < 3)
-              {
-                add(zG + v.t2, w[4 * k + 3]);
-                add(zG + v.t1, -w[4 * k + 3]);
-              }
-          }
-
-        // Z = dz/dcoordinates: the identity, then the columns grad s_k,
-        // grad G_t, dnu_d, each zero outside a few points
-        std::array<const Vec *, 15> Zc{};
-        std::array<Support, 15>     Zs;
-        Vec                         dnu_col[3];
-        for (unsigned int k = 0; k < m; ++k)
-          if (form[k].s_varies)
-            {
-              const VertexForm           &v = form[k];
-              std::array<unsigned int, 8> P;
-              std::copy(v.a.point.begin(), v.a.point.end(), P.begin());
-              std::copy(v.b.point.begin(), v.b.point.end(), P.begin() + 4);
-              Zc[k] = &v.grad_s;
-              Zs[k] = Support(P);
-            }
-        for (unsigned int t = 0; t < 3; ++t)
-          {
-            Zc[m + t] = &depth[t].grad_G;
-            Zs[m + t] = Support(depth[t].points);
-          }
-        for (unsigned int d = 0; d < 3; ++d)
-          {
-            dnu_col[d].fill(0.);
-            for (unsigned int X = 0; X < 3; ++X)
-              for (unsigned int e = 0; e < 3; ++e)
-                dnu_col[d][3 * (4 + X) + e] = dnu[X][d][e];
-            Zc[m + 3 + d] = &dnu_col[d];
-            Zs[m + 3 + d] = Support(std::array<unsigned int, 3>{{4, 5, 6}});
-          }
-
-        // H = A + Mh + Mh^T, Mh = Z U^T + (half of the first-derivative
-        // terms below), U = B + Z C / 2 with Hz = [A B; B^T C]. U is kept
-        // transposed and Mh row by row, so that the inner loops run over
-        // 21 contiguous entries
-        std::array<Vec, 15> Ut;
-        for (unsigned int j = 0; j < q; ++j)
-          std::copy(Hz[n + j].begin(), Hz[n + j].begin() + n, Ut[j].begin());
-        for (unsigned int l = 0; l < q; ++l)
-          if (Zc[l] != nullptr)
-            {
-              const Vec &z = *Zc[l];
-              for (unsigned int j = 0; j < q; ++j)
-                {
-                  const double c = 0.5 * Hz[n + j][n + l];
-                  if (c != 0.)
-                    for (unsigned int i = 0; i < n; ++i)
-                      Ut[j][i] += c * z[i];
-                }
-            }
-        Mat Mh{}; // zero (one block)
-        for (unsigned int j = 0; j < q; ++j)
-          if (Zc[j] != nullptr)
-            {
-              const Vec &z = *Zc[j];
-              for (unsigned int p = 0; p < Zs[j].size; ++p)
-                {
-                  const unsigned int k  = Zs[j].i[p];
-                  const double       zk = z[k];
-                  for (unsigned int i = 0; i < n; ++i)
-                    Mh[k][i] += zk * Ut[j][i];
-                }
-            }
-
-        // + sum_k sigma_k Hess s_k
-        for (unsigned int k = 0; k < m; ++k)
-          {
-            const VertexForm &v = form[k];
-            if (!v.s_varies)
-              continue;
-            add_hessian(Mh, x, v.a, sigma[k] * v.s_a);
-            add_hessian(Mh, x, v.b, sigma[k] * v.s_b);
-            Vec ga{}, gb{};
-            add_gradient(ga, v.a, 1.);
-            add_gradient(gb, v.b, 1.);
-            const Support sa = support(v.a), sb = support(v.b);
-            add_symmetric_outer(Mh, ga, sa, ga, sa, 0.5 * sigma[k] * v.s_aa);
-            add_symmetric_outer(Mh, ga, sa, gb, sb, sigma[k] * v.s_ab);
-            add_symmetric_outer(Mh, gb, sb, gb, sb, 0.5 * sigma[k] * v.s_bb);
-          }
-        // + sum_t omega_t Hess G_t, G_t = N_t / V
-        for (unsigned int t = 0; t < 3; ++t)
-          if (omega[t] != 0.)
-            add_depth_hessian(Mh, x, V, depth[t], g, omega[t]);
-        for (unsigned int i = 0; i < n; ++i)
-          std::copy(Hz[i].begin(), Hz[i].begin() + n, H[i].begin());
-        add_symmetrized(H, Mh);
-        // + Hess(w_nu . nu): with phi(N) = w_nu . N / |N|, p = dphi/dN,
-        // M^T (d2phi/dN2) M + the bilinear part p . (dE1 x dE2)
+        ParameterJacobian(const std::array<ZetaVertex, 9> &form,
+                          const unsigned int               m,
+                          const unsigned int               n_p,
+                          const std::array<double, 4>     &g)
         {
-          const Tensor<1, 3> p   = Pnu * w_nu;
-          const double       wn  = w_nu * nu;
-          Tensor<2, 3>       Phi = 3. * wn * outer_product(nu, nu) -
-                             outer_product(w_nu, nu) - outer_product(nu, w_nu);
-          for (unsigned int d = 0; d < 3; ++d)
-            Phi[d][d] -= wn;
-          Phi /= rT * rT;
-          const Tensor<2, 3> Bp = -cross_matrix(p);
-          for (unsigned int X = 0; X < 3; ++X)
-            for (unsigned int Y = 0; Y < 3; ++Y)
-              {
-                Tensor<2, 3> block = transpose(M[X]) * Phi * M[Y];
-                if ((Y + 3 - X) % 3 == 1)
-                  block += Bp;
-                else if ((X + 3 - Y) % 3 == 1)
-                  block -= Bp;
-                for (unsigned int a = 0; a < 3; ++a)
-                  for (unsigned int b = 0; b < 3; ++b)
-                    H[3 * (4 + X) + a][3 * (4 + Y) + b] += block[a][b];
-              }
+          for (unsigned int k = 0; k < m; ++k)
+            {
+              const ZetaVertex &v = form[k];
+              if (v.kind == ZetaVertex::edge_cut)
+                {
+                  J[v.p][0] = {3 * v.i + v.ta, v.s_A};
+                  J[v.p][1] = {3 * v.i + v.tb, v.s_B};
+                  n[v.p]    = 2;
+                }
+              else if (v.kind == ZetaVertex::plane_cut)
+                for (unsigned int c = 0; c < 3; ++c)
+                  {
+                    for (unsigned int t = 0; t < 3; ++t)
+                      {
+                        J[v.p + c][t]     = {3 * v.i + t, v.dzeta[t][c]};
+                        J[v.p + c][3 + t] = {3 * v.j + t, v.dzeta[3 + t][c]};
+                      }
+                    n[v.p + c] = 6;
+                  }
+            }
+          for (unsigned int t = 0; t < 3; ++t)
+            {
+              for (unsigned int j = 0; j < 4; ++j)
+                J[n_p - 3 + t][j] = {3 * j + t, g[j]};
+              n[n_p - 3 + t] = 4;
+            }
         }
+      };
+
+
+      /**
+       * Stage 3: the gradient and Hessian of Phi in Lambda by the chain rule
+       * through the parameters, with the second derivatives of s
+       * (edge cuts) and of zeta = c / sigma (plane cuts).
+       */
+      void
+      chain_to_lambda(const std::array<ZetaVertex, 9>        &form,
+                      const unsigned int                      m,
+                      const FanIntegral                      &fan,
+                      const ParameterJacobian                &pj,
+                      const bool                              with_hessian,
+                      std::array<double, 12>                 &dPhi,
+                      std::array<std::array<double, 12>, 12> &HPhi)
+      {
+        const unsigned int n_p = fan.n_p;
+        dPhi.fill(0.);
+        for (unsigned int p = 0; p < n_p; ++p)
+          for (unsigned int e = 0; e < pj.n[p]; ++e)
+            dPhi[pj.J[p][e].alpha] += fan.g[p] * pj.J[p][e].c;
+        if (!with_hessian)
+          return;
+        // HJ = H_p J, then J^T HJ
+        std::array<std::array<double, 12>, 24> HJ;
+        for (unsigned int p = 0; p < n_p; ++p)
+          {
+            HJ[p].fill(0.);
+            for (unsigned int q = 0; q < n_p; ++q)
+              {
+                const double h = fan.H[p][q];
+                if (h != 0.)
+                  for (unsigned int e = 0; e < pj.n[q]; ++e)
+                    HJ[p][pj.J[q][e].alpha] += h * pj.J[q][e].c;
+              }
+          }
+        for (auto &row : HPhi)
+          row.fill(0.);
+        for (unsigned int p = 0; p < n_p; ++p)
+          for (unsigned int e = 0; e < pj.n[p]; ++e)
+            {
+              const double c   = pj.J[p][e].c;
+              auto        &row = HPhi[pj.J[p][e].alpha];
+              for (unsigned int b = 0; b < 12; ++b)
+                row[b] += c * HJ[p][b];
+            }
+        // the parameters' second derivatives, weighted by dPhi/dparameter
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            const ZetaVertex &v = form[k];
+            if (v.kind == ZetaVertex::edge_cut)
+              {
+                const double       gs = fan.g[v.p];
+                const unsigned int A = 3 * v.i + v.ta, B = 3 * v.i + v.tb;
+                HPhi[A][A] += gs * v.s_AA;
+                HPhi[A][B] += gs * v.s_AB;
+                HPhi[B][A] += gs * v.s_AB;
+                HPhi[B][B] += gs * v.s_BB;
+              }
+            else if (v.kind == ZetaVertex::plane_cut)
+              {
+                // phi = gz . zeta = gz . c / sigma, c = u x w: with
+                // beta = gz - phi 1, d phi = beta . dc / sigma and
+                // d2 phi = (beta . d2c - dphi dsigma^T - dsigma dphi^T) /
+                // sigma, d2c/du_t dw_s = e_t x e_s
+                const Tensor<1, 3> gz(
+                  {fan.g[v.p], fan.g[v.p + 1], fan.g[v.p + 2]});
+                const double       phi  = gz * v.zeta;
+                const Tensor<1, 3> beta = gz - phi * Tensor<1, 3>({1., 1., 1.});
+                std::array<double, 6> dphi;
+                for (unsigned int a = 0; a < 6; ++a)
+                  dphi[a] = gz[0] * v.dzeta[a][0] + gz[1] * v.dzeta[a][1] +
+                            gz[2] * v.dzeta[a][2];
+                std::array<unsigned int, 6> idx;
+                for (unsigned int t = 0; t < 3; ++t)
+                  {
+                    idx[t]     = 3 * v.i + t;
+                    idx[3 + t] = 3 * v.j + t;
+                  }
+                for (unsigned int a = 0; a < 6; ++a)
+                  for (unsigned int b = 0; b < 6; ++b)
+                    {
+                      double h =
+                        -(dphi[a] * v.dsigma[b] + v.dsigma[a] * dphi[b]);
+                      if (a < 3 && b >= 3)
+                        {
+                          const unsigned int t = a, s = b - 3;
+                          // beta . (e_t x e_s)
+                          if (t != s)
+                            h +=
+                              ((s == (t + 1) % 3) ? 1. : -1.) * beta[3 - t - s];
+                        }
+                      else if (a >= 3 && b < 3)
+                        {
+                          const unsigned int t = b, s = a - 3;
+                          if (t != s)
+                            h +=
+                              ((s == (t + 1) % 3) ? 1. : -1.) * beta[3 - t - s];
+                        }
+                      HPhi[idx[a]][idx[b]] += h / v.sigma;
+                    }
+              }
+          }
+      }
+
+
+      /**
+       * Stage 4: from Lambda to the 21 coordinates. With
+       * @f$\delta y_t = \delta t_t - \sum_i\Lambda_{it}\delta v_i@f$,
+       * @f$\delta\Lambda_{jt} = a_j\cdot\delta y_t@f$ and
+       * @f$\delta^2\Lambda_{jt} = -2\sum_k(a_j\cdot\delta v_k)(a_k\cdot\delta
+       * y_t)@f$:
+       * @f$q_t = \sum_j\Phi_{jt}a_j@f$, @f$K_{tu} = \sum_{jk}\Phi_{jt,ku}
+       * a_j a_k^T@f$, @f$r_i = \sum_t\Lambda_{it}q_t@f$,
+       * @f$R_{iu} = \sum_t\Lambda_{it}K_{tu}@f$; the gradient of Phi is
+       * @f$q_t@f$ at t_t and @f$-r_i@f$ at v_i, its Hessian has the blocks
+       * @f$K_{tu}@f$, @f$-R_{iu} - q_u a_i^T@f$ (v_i, t_u) and
+       * @f$\sum_u\Lambda_{iu}R_{ku} + r_i a_k^T + a_i r_k^T@f$ (v_k, v_i).
+       * Then @f$W = cN\Phi@f$.
+       */
+      void
+      to_coordinates(const Barycentric                            &bary,
+                     const TriangleArea                           &area,
+                     const double                                  Phi,
+                     const std::array<double, 12>                 &dPhi,
+                     const std::array<std::array<double, 12>, 12> &HPhi,
+                     const double                                  c,
+                     const bool                                    with_hessian,
+                     PairKernel                                   &result)
+      {
+        const auto                 &a = bary.a;
+        const auto                 &L = bary.L;
+        std::array<Tensor<1, 3>, 3> q;
+        for (unsigned int t = 0; t < 3; ++t)
+          q[t] = dPhi[t] * a[0] + dPhi[3 + t] * a[1] + dPhi[6 + t] * a[2] +
+                 dPhi[9 + t] * a[3];
+        std::array<Tensor<1, 3>, 4> r;
+        for (unsigned int i = 0; i < 4; ++i)
+          r[i] = L[i][0] * q[0] + L[i][1] * q[1] + L[i][2] * q[2];
+        // the gradient of W = c N Phi
+        const double cN = c * area.N, cPhi = c * Phi;
+        for (unsigned int i = 0; i < 4; ++i)
+          for (unsigned int d = 0; d < 3; ++d)
+            result.gradient[3 * i + d] = -cN * r[i][d];
+        for (unsigned int t = 0; t < 3; ++t)
+          for (unsigned int d = 0; d < 3; ++d)
+            result.gradient[3 * (4 + t) + d] =
+              cN * q[t][d] + cPhi * area.gradient[t][d];
+        if (!with_hessian)
+          return;
+
+        // K_tu = sum_j a_j (sum_k Phi_{jt,ku} a_k)^T
+        std::array<std::array<Tensor<2, 3>, 3>, 3> K;
+        for (unsigned int t = 0; t < 3; ++t)
+          for (unsigned int u = t; u < 3; ++u)
+            {
+              Tensor<2, 3> Ktu;
+              for (unsigned int j = 0; j < 4; ++j)
+                {
+                  const auto        &row = HPhi[3 * j + t];
+                  const Tensor<1, 3> y   = row[u] * a[0] + row[3 + u] * a[1] +
+                                         row[6 + u] * a[2] + row[9 + u] * a[3];
+                  Ktu += outer_product(a[j], y);
+                }
+              K[t][u] = Ktu;
+              K[u][t] = transpose(Ktu);
+            }
+        std::array<std::array<Tensor<2, 3>, 3>, 4> R;
+        for (unsigned int i = 0; i < 4; ++i)
+          for (unsigned int u = 0; u < 3; ++u)
+            R[i][u] = L[i][0] * K[0][u] + L[i][1] * K[1][u] + L[i][2] * K[2][u];
+
+        auto      &H   = result.hessian;
+        const auto put = [&](const unsigned int  P,
+                             const unsigned int  Q,
+                             const Tensor<2, 3> &B) {
+          for (unsigned int d = 0; d < 3; ++d)
+            for (unsigned int e = 0; e < 3; ++e)
+              {
+                H[3 * P + d][3 * Q + e] = B[d][e];
+                H[3 * Q + e][3 * P + d] = B[d][e];
+              }
+        };
+        // the triangle's gradient of Phi, for the product rule with N
+        std::array<Tensor<1, 3>, 7> dPhi_x;
+        for (unsigned int i = 0; i < 4; ++i)
+          dPhi_x[i] = -r[i];
+        for (unsigned int t = 0; t < 3; ++t)
+          dPhi_x[4 + t] = q[t];
+        for (unsigned int k = 0; k < 4; ++k)
+          for (unsigned int i = k; i < 4; ++i)
+            {
+              Tensor<2, 3> B = L[i][0] * R[k][0] + L[i][1] * R[k][1] +
+                               L[i][2] * R[k][2] + outer_product(r[i], a[k]) +
+                               outer_product(a[i], r[k]);
+              put(k, i, cN * B);
+            }
+        for (unsigned int i = 0; i < 4; ++i)
+          for (unsigned int u = 0; u < 3; ++u)
+            {
+              Tensor<2, 3> B = cN * (-R[i][u] - outer_product(q[u], a[i])) +
+                               c * outer_product(dPhi_x[i], area.gradient[u]);
+              put(i, 4 + u, B);
+            }
+        for (unsigned int t = 0; t < 3; ++t)
+          for (unsigned int u = t; u < 3; ++u)
+            {
+              Tensor<2, 3> B = cN * K[t][u] + cPhi * area.hessian[t][u] +
+                               c * (outer_product(area.gradient[t], q[u]) +
+                                    outer_product(q[t], area.gradient[u]));
+              put(4 + t, 4 + u, B);
+            }
       }
     } // namespace
 
@@ -774,26 +881,23 @@ namespace TissueContact
         return false;
       const Points x = {
         {tet[0], tet[1], tet[2], tet[3], tri[0], tri[1], tri[2]}};
-
-      // depth field at the triangle vertices (sec. 5.1, G_t)
-      const Orientation                V     = orientation(x, {{0, 1, 2, 3}});
-      const std::array<VertexDepth, 3> depth = {{vertex_depth(x, V, g, 0),
-                                                 vertex_depth(x, V, g, 1),
-                                                 vertex_depth(x, V, g, 2)}};
-      // clip labels -> polygon vertices -> fan integral -> chain rule
-      std::array<VertexForm, 9> form;
-      polygon_vertices(polygon, x, depth, g, form);
-      TriangleNormal normal(tri);
-      FanIntegral    fan;
-      fan_integral(form, m, normal, eps_p, with_hessian, fan);
-      if (!(fan.energy > 0.))
+      // W = c N Phi(Lambda), c = eps_p / 24 (sec. 5.1)
+      const Barycentric         bary(x, g);
+      TriangleArea              area(tri);
+      std::array<ZetaVertex, 9> form;
+      FanIntegral               fan;
+      fan.n_p = polygon_vertices(polygon, x, bary, area, form);
+      fan_integral(form, m, bary, with_hessian, fan);
+      const double c = eps_p / 24.;
+      if (!(c * area.N * fan.Phi > 0.))
         return false;
-      result.energy = fan.energy;
-      normal.derivatives(tri);
-      ChainWeights cw;
-      chain_gradient(form, x, depth, normal, fan, cw, result.gradient);
-      if (with_hessian)
-        chain_hessian(form, x, V, depth, g, normal, fan, cw, result.hessian);
+      result.energy = c * area.N * fan.Phi;
+      area.derivatives(tri, with_hessian);
+      const ParameterJacobian                pj(form, m, fan.n_p, g);
+      std::array<double, 12>                 dPhi;
+      std::array<std::array<double, 12>, 12> HPhi;
+      chain_to_lambda(form, m, fan, pj, with_hessian, dPhi, HPhi);
+      to_coordinates(bary, area, fan.Phi, dPhi, HPhi, c, with_hessian, result);
       return true;
     }
 
@@ -822,22 +926,13 @@ namespace TissueContact
       if (!any)
         return false;
       // A_T = |N_T| / 2 and its derivatives in the triangle vertices
-      const Tensor<1, 3>          E1 = tri[1] - tri[0], E2 = tri[2] - tri[0];
-      const Tensor<1, 3>          NT = cross_product_3d(E1, E2);
-      const double                rT = NT.norm();
-      const Tensor<1, 3>          nu = NT / rT;
-      const double                A  = 0.5 * rT;
-      std::array<Tensor<2, 3>, 3> M;
-      M[1] = -cross_matrix(E2);
-      M[2] = cross_matrix(E1);
-      M[0] = -(M[1] + M[2]);
-      Vec grad_A{};
+      TriangleArea area(tri);
+      area.derivatives(tri, with_hessian);
+      const double A = 0.5 * area.N;
+      Vec          grad_A{};
       for (unsigned int X = 0; X < 3; ++X)
-        {
-          const Tensor<1, 3> gX = 0.5 * (transpose(M[X]) * nu);
-          for (unsigned int d = 0; d < 3; ++d)
-            grad_A[3 * (4 + X) + d] = gX[d];
-        }
+        for (unsigned int d = 0; d < 3; ++d)
+          grad_A[3 * (4 + X) + d] = 0.5 * area.gradient[X][d];
 
       double S = 0.; // sum of G_k^2 over the vertices inside, G_k > 0
       Vec    grad_S{};
@@ -866,27 +961,13 @@ namespace TissueContact
       // c (S Hess A + grad A (x) grad S + grad S (x) grad A + A Hess S)
       Mat &H = result.hessian;
       H      = Mat{};
-      {
-        // Hess |N_T| = M^T (I - nu nu^T) M / |N_T| + bilinear part of N_T
-        // weighted by nu; A = |N_T| / 2
-        Tensor<2, 3> P = -outer_product(nu, nu);
-        for (unsigned int d = 0; d < 3; ++d)
-          P[d][d] += 1.;
-        const Tensor<2, 3> Bn = -cross_matrix(nu);
-        for (unsigned int X = 0; X < 3; ++X)
-          for (unsigned int Y = 0; Y < 3; ++Y)
-            {
-              Tensor<2, 3> block = transpose(M[X]) * P * M[Y] / rT;
-              if ((Y + 3 - X) % 3 == 1)
-                block += Bn;
-              else if ((X + 3 - Y) % 3 == 1)
-                block -= Bn;
-              for (unsigned int a = 0; a < 3; ++a)
-                for (unsigned int b = 0; b < 3; ++b)
-                  H[3 * (4 + X) + a][3 * (4 + Y) + b] +=
-                    c * S * 0.5 * block[a][b];
-            }
-      }
+      // c S Hess A, Hess A = Hess |N_T| / 2
+      for (unsigned int X = 0; X < 3; ++X)
+        for (unsigned int Y = 0; Y < 3; ++Y)
+          for (unsigned int a = 0; a < 3; ++a)
+            for (unsigned int b = 0; b < 3; ++b)
+              H[3 * (4 + X) + a][3 * (4 + Y) + b] +=
+                c * S * 0.5 * area.hessian[X][Y][a][b];
       // the symmetric terms, half of each in Mh (H += Mh + Mh^T below)
       Mat Mh{};
       add_symmetric_outer(Mh, grad_A, grad_S, c);

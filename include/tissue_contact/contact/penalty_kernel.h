@@ -26,12 +26,14 @@ namespace TissueContact
     /**
      * The penalty energy of a pair (penalty_energy.h) with its exact
      * gradient and, if @p with_hessian, its exact Hessian, derived by hand
-     * (doc/theory/05-contact.md, sec. 5.1): every polygon vertex is, by its
-     * labels, a triangle vertex, a triangle edge cut by a face plane or a
-     * tetrahedron edge cut by the triangle plane, i.e. @f$x = (1-s)y_1 +
-     * s y_2@f$ with @f$s = a/(a-b)@f$ a ratio of two orientation
-     * determinants; the fan integral is differentiated in the polygon
-     * vertices and chained through these closed forms.
+     * (doc/theory/05-contact.md, sec. 5.1): the energy is @f$W = c N
+     * \Phi(\Lambda)@f$, N twice the triangle's area and @f$\Lambda_{jt}@f$
+     * the tetrahedron's barycentric coordinates of the triangle's vertices;
+     * every polygon vertex is, by its clipping labels, a triangle vertex, a
+     * triangle edge cut by a face plane or a tetrahedron edge cut by the
+     * triangle's plane, a closed form in the triangle's barycentric
+     * coordinates; the fan integral is differentiated in those, chained to
+     * @f$\Lambda@f$ and from there to the 21 coordinates.
      *
      * Returns false (and leaves @p result unset) when the energy is zero.
      * The automatic-differentiation reference (ad_derivatives() of
