@@ -440,12 +440,12 @@ namespace TissueContact
                                            dcw = cross_product_3d(u, e);
                         v.dsigma[t]            = dcu[0] + dcu[1] + dcu[2];
                         v.dsigma[3 + t]        = dcw[0] + dcw[1] + dcw[2];
-                        for (unsigned int e = 0; e < 3; ++e)
+                        for (unsigned int d = 0; d < 3; ++d)
                           {
-                            v.dzeta[t][e] =
-                              (dcu[e] - v.dsigma[t] * v.zeta[e]) / v.sigma;
-                            v.dzeta[3 + t][e] =
-                              (dcw[e] - v.dsigma[3 + t] * v.zeta[e]) / v.sigma;
+                            v.dzeta[t][d] =
+                              (dcu[d] - v.dsigma[t] * v.zeta[d]) / v.sigma;
+                            v.dzeta[3 + t][d] =
+                              (dcw[d] - v.dsigma[3 + t] * v.zeta[d]) / v.sigma;
                           }
                       }
                   }
@@ -463,14 +463,17 @@ namespace TissueContact
       }
 
 
+      /** At most 3 parameters per polygon vertex (9 slots, sec. 3), then G */
+      constexpr unsigned int max_parameters = 3 * 9 + 3;
+
       /** The fan integral and its derivatives in the parameters: the
        * vertices' s or zeta, then G (3). */
       struct FanIntegral
       {
-        unsigned int                           n_p = 0;
-        double                                 Phi = 0.;
-        std::array<double, 24>                 g{};
-        std::array<std::array<double, 24>, 24> H;
+        unsigned int                                                   n_p = 0;
+        double                                                         Phi = 0.;
+        std::array<double, max_parameters>                             g{};
+        std::array<std::array<double, max_parameters>, max_parameters> H;
       };
 
       /** Column c of the basis B_k of a vertex's parameters in zeta:
@@ -615,8 +618,8 @@ namespace TissueContact
           unsigned int alpha;
           double       c;
         };
-        std::array<std::array<Entry, 6>, 24> J;
-        std::array<unsigned int, 24>         n{};
+        std::array<std::array<Entry, 6>, max_parameters> J;
+        std::array<unsigned int, max_parameters>         n{};
 
         ParameterJacobian(const std::array<ZetaVertex, 9> &form,
                           const unsigned int               m,
@@ -675,7 +678,7 @@ namespace TissueContact
         if (!with_hessian)
           return;
         // HJ = H_p J, then J^T HJ
-        std::array<std::array<double, 12>, 24> HJ;
+        std::array<std::array<double, 12>, max_parameters> HJ;
         for (unsigned int p = 0; p < n_p; ++p)
           {
             HJ[p].fill(0.);
