@@ -2,7 +2,6 @@
 #include <tissue_contact/contact/penalty_kernel.h>
 
 #include <algorithm>
-#include <cstring>
 
 // Symbols follow doc/theory/05-contact.md, sec. 5.1.
 
@@ -120,8 +119,6 @@ namespace TissueContact
       {
         unsigned int                size = 0;
         std::array<unsigned int, n> i;
-
-        Support() = default;
 
         /** the coordinates of the listed points (repeats allowed) */
         template <std::size_t N>
