@@ -316,9 +316,10 @@ namespace TissueContact
        * face i (@f$\zeta = (1-s)e_a + s e_b@f$,
        * @f$s = \Lambda_{ia}/(\Lambda_{ia} - \Lambda_{ib})@f$), or the
        * tetrahedron edge on faces i and j cut by the triangle's plane
-       * (@f$\zeta = c/\sigma@f$, @f$c = \Lambda_i\times\Lambda_j@f$ of the
-       * rows i, j of @f$\Lambda@f$, @f$\sigma = \mathbf 1\cdot c@f$). Its
-       * parameters (none, s, or the three components of @f$\zeta@f$) start
+       * (@f$\zeta = \kappa/\sigma@f$, @f$\kappa = \Lambda_i\times\Lambda_j@f$
+       * of the rows i, j of @f$\Lambda@f$, @f$\sigma = \mathbf
+       * 1\cdot\kappa@f$). Its parameters (none, s, or the three components of
+       * @f$\zeta@f$) start
        * at index @p p.
        */
       struct ZetaVertex
@@ -411,38 +412,38 @@ namespace TissueContact
                 v.j = c2 - 3;
                 const Tensor<1, 3> u({L[v.i][0], L[v.i][1], L[v.i][2]}),
                   w({L[v.j][0], L[v.j][1], L[v.j][2]});
-                const Tensor<1, 3> c = cross_product_3d(u, w);
-                v.sigma              = c[0] + c[1] + c[2];
+                const Tensor<1, 3> kappa = cross_product_3d(u, w);
+                v.sigma                  = kappa[0] + kappa[1] + kappa[2];
                 if (v.sigma != 0.)
                   {
                     v.kind = ZetaVertex::plane_cut;
-                    v.zeta = c / v.sigma;
+                    v.zeta = kappa / v.sigma;
                     // where rounding puts the cut beyond the edge's end
                     // (lambda of an end point below zero), its value is the
-                    // clipping's point, its derivatives those of c / sigma
+                    // clipping's point, its derivatives those of kappa / sigma
                     unsigned int q = 4;
                     for (unsigned int r = 0; r < 4; ++r)
                       if (r != v.i && r != v.j)
                         q = r;
-                    const double lq =
-                      (L[q][0] * c[0] + L[q][1] * c[1] + L[q][2] * c[2]) /
-                      v.sigma;
+                    const double lq = (L[q][0] * kappa[0] + L[q][1] * kappa[1] +
+                                       L[q][2] * kappa[2]) /
+                                      v.sigma;
                     if (lq < 0. || lq > 1.)
                       v.zeta = zeta_of(x, area, polygon.vertex[k].x);
                     for (unsigned int t = 0; t < 3; ++t)
                       {
                         Tensor<1, 3> e;
                         e[t]                   = 1.;
-                        const Tensor<1, 3> dcu = cross_product_3d(e, w),
-                                           dcw = cross_product_3d(u, e);
-                        v.dsigma[t]            = dcu[0] + dcu[1] + dcu[2];
-                        v.dsigma[3 + t]        = dcw[0] + dcw[1] + dcw[2];
+                        const Tensor<1, 3> dku = cross_product_3d(e, w),
+                                           dkw = cross_product_3d(u, e);
+                        v.dsigma[t]            = dku[0] + dku[1] + dku[2];
+                        v.dsigma[3 + t]        = dkw[0] + dkw[1] + dkw[2];
                         for (unsigned int d = 0; d < 3; ++d)
                           {
                             v.dzeta[t][d] =
-                              (dcu[d] - v.dsigma[t] * v.zeta[d]) / v.sigma;
+                              (dku[d] - v.dsigma[t] * v.zeta[d]) / v.sigma;
                             v.dzeta[3 + t][d] =
-                              (dcw[d] - v.dsigma[3 + t] * v.zeta[d]) / v.sigma;
+                              (dkw[d] - v.dsigma[3 + t] * v.zeta[d]) / v.sigma;
                           }
                       }
                   }
@@ -656,7 +657,7 @@ namespace TissueContact
       /**
        * Stage 3: the gradient and Hessian of Phi in Lambda by the chain rule
        * through the parameters, with the second derivatives of s
-       * (edge cuts) and of zeta = c / sigma (plane cuts).
+       * (edge cuts) and of zeta = kappa / sigma (plane cuts).
        */
       void
       chain_to_lambda(const std::array<ZetaVertex, 9>        &form,
@@ -712,10 +713,10 @@ namespace TissueContact
               }
             else if (v.kind == ZetaVertex::plane_cut)
               {
-                // phi = gz . zeta = gz . c / sigma, c = u x w: with
-                // beta = gz - phi 1, d phi = beta . dc / sigma and
-                // d2 phi = (beta . d2c - dphi dsigma^T - dsigma dphi^T) /
-                // sigma, d2c/du_t dw_s = e_t x e_s
+                // phi = gz . zeta = gz . kappa / sigma, kappa = u x w: with
+                // beta = gz - phi 1, d phi = beta . dkappa / sigma and
+                // d2 phi = (beta . d2kappa - dphi dsigma^T - dsigma dphi^T) /
+                // sigma, d2kappa/du_t dw_s = e_t x e_s
                 const Tensor<1, 3> gz(
                   {fan.g[v.p], fan.g[v.p + 1], fan.g[v.p + 2]});
                 const double       phi  = gz * v.zeta;
