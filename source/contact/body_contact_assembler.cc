@@ -110,42 +110,119 @@ namespace TissueContact
     BodyContactAssembler::update_candidates(
       const std::vector<Point<3>> &x) const
     {
+      // the vertices that moved more than half the margin from their
+      // reference positions (doc/theory/05-contact.md, sec. 2.1)
+      std::vector<bool> moved;
+      unsigned int      n_moved = 0;
       if (have_candidates)
         {
-          double moved = 0.;
+          const double limit = 0.25 * candidate_margin * candidate_margin;
+          moved.resize(x.size());
           for (unsigned int v = 0; v < x.size(); ++v)
-            moved = std::max(moved, x[v].distance_square(x_at_candidates[v]));
-          if (std::sqrt(moved) <= 0.5 * candidate_margin)
+            if (x[v].distance_square(x_reference[v]) > limit)
+              {
+                moved[v] = true;
+                ++n_moved;
+              }
+          if (n_moved == 0)
             return;
         }
-      const auto scope = time_section(timer, "contact: search");
-      refit(x);
-      // the triangles' searches in parallel (the tree is only read), the
-      // lists appended in the triangles' order
-      candidates.clear();
+      const auto scope     = time_section(timer, "contact: search");
+      const auto has_moved = [&](const auto &vertices) {
+        return std::any_of(vertices.begin(),
+                           vertices.end(),
+                           [&](const unsigned int v) { return moved[v]; });
+      };
+      // the tetrahedra with a moved vertex; with more than half of them
+      // moved a new search costs less than the update
+      std::vector<unsigned int> moved_tets;
+      if (have_candidates)
+        for (unsigned int k = 0; k < tets.size(); ++k)
+          if (has_moved(tets[k]))
+            moved_tets.push_back(k);
+      const bool search_all =
+        !have_candidates || 2 * moved_tets.size() > tets.size();
+      if (search_all)
+        x_reference = x;
+      else
+        for (unsigned int v = 0; v < x.size(); ++v)
+          if (moved[v])
+            x_reference[v] = x[v];
+      refit(x_reference);
+      // the moved tetrahedra in a tree of their own, for the triangles that
+      // did not move: their other candidates stay what they were
+      std::unique_ptr<BoundingVolumeTree> moved_tree;
+      if (!search_all && !moved_tets.empty())
+        {
+          std::vector<BoundingBox<3>> boxes;
+          for (const unsigned int k : moved_tets)
+            boxes.push_back(tet_box(x_reference, k));
+          moved_tree = std::make_unique<BoundingVolumeTree>(boxes);
+        }
+      std::vector<bool> tet_moved(search_all ? 0 : tets.size());
+      for (const unsigned int k : moved_tets)
+        if (!search_all)
+          tet_moved[k] = true;
+      // the triangles in parallel (the trees are only read), each list
+      // sorted by tetrahedron and pair: the same list whichever way it was
+      // found, so the sums over it are too
+      std::vector<Candidate>    old_candidates;
+      std::vector<unsigned int> old_offsets;
+      std::swap(old_candidates, candidates);
+      std::swap(old_offsets, offsets);
       offsets.assign(1, 0);
       per_surface_triangle(
         [&](const unsigned int i, std::vector<Candidate> &found) {
           found.clear();
-          for_each_candidate_of(
-            surface_triangles[i],
-            x,
-            candidate_margin,
-            [&](const unsigned int t,
-                const unsigned int k,
-                const BodyContact &p) {
-              found.push_back(
-                {t, k, static_cast<unsigned int>(&p - pairs.data())});
-            });
+          const unsigned int t    = surface_triangles[i];
+          const auto         keep = [&](const unsigned int t,
+                                const unsigned int k,
+                                const BodyContact &p) {
+            found.push_back(
+              {t, k, static_cast<unsigned int>(&p - pairs.data())});
+          };
+          if (search_all || has_moved(surface.triangles[t]))
+            for_each_candidate_of(t, x_reference, candidate_margin, keep);
+          else
+            {
+              for (unsigned int c = old_offsets[i]; c < old_offsets[i + 1]; ++c)
+                if (!tet_moved[old_candidates[c].k])
+                  found.push_back(old_candidates[c]);
+              if (!moved_tree)
+                return;
+              const std::size_t n_kept = found.size();
+              for_each_candidate_in(*moved_tree,
+                                    moved_tets,
+                                    t,
+                                    x_reference,
+                                    candidate_margin,
+                                    keep);
+              if (found.size() == n_kept)
+                return; // what is left of a sorted list is sorted
+            }
+          std::sort(found.begin(),
+                    found.end(),
+                    [](const Candidate &a, const Candidate &b) {
+                      return a.k < b.k || (a.k == b.k && a.pair < b.pair);
+                    });
         },
         [&](const std::vector<Candidate> &found) {
           candidates.insert(candidates.end(), found.begin(), found.end());
           offsets.push_back(candidates.size());
         },
         std::vector<Candidate>());
-      x_at_candidates = x;
       have_candidates = true;
       have_survivors  = false;
+    }
+
+
+    BoundingBox<3>
+    BodyContactAssembler::tet_box(const std::vector<Point<3>> &x,
+                                  const unsigned int           k) const
+    {
+      const auto &t = tets[k];
+      return BoundingBox<3>(
+        std::array<Point<3>, 4>{{x[t[0]], x[t[1]], x[t[2]], x[t[3]]}});
     }
 
 
@@ -154,9 +231,8 @@ namespace TissueContact
     {
       std::vector<BoundingBox<3>> boxes;
       boxes.reserve(tets.size());
-      for (const auto &t : tets)
-        boxes.push_back(BoundingBox<3>(
-          std::array<Point<3>, 4>{{x[t[0]], x[t[1]], x[t[2]], x[t[3]]}}));
+      for (unsigned int k = 0; k < tets.size(); ++k)
+        boxes.push_back(tet_box(x, k));
       // a refitted tree stays exact but degrades when objects that were
       // neighbours drift apart: rebuild once a vertex has moved farther than
       // the mean tetrahedron size since the last build (a rebuild costs
@@ -193,6 +269,20 @@ namespace TissueContact
                                                 const double margin,
                                                 const F     &f) const
     {
+      for_each_candidate_in(*tree, {}, t, x, margin, f);
+    }
+
+
+    template <typename F>
+    void
+    BodyContactAssembler::for_each_candidate_in(
+      const BoundingVolumeTree        &in,
+      const std::vector<unsigned int> &tet_of,
+      const unsigned int               t,
+      const std::vector<Point<3>>     &x,
+      const double                     margin,
+      const F                         &f) const
+    {
       if (!surface_of_a_pair(t))
         return;
       const std::vector<unsigned int> *row =
@@ -202,7 +292,8 @@ namespace TissueContact
         BoundingBox<3>(std::array<Point<3>, 3>{{x[tv[0]], x[tv[1]], x[tv[2]]}});
       if (margin > 0.)
         box.extend(margin);
-      tree->for_each_overlap(box, [&](const unsigned int k) {
+      in.for_each_overlap(box, [&](const unsigned int object) {
+        const unsigned int k = tet_of.empty() ? object : tet_of[object];
         const std::vector<unsigned int> &matching = row[tet_body[k]];
         if (matching.empty())
           return;

@@ -34,12 +34,14 @@ namespace TissueContact
      * parallel and summed in a fixed order (reproducible).
      *
      * The candidate pairs (boxes overlapping) are kept in a list found with
-     * a margin @f$m@f$ and shared by every call (residual and tangent, the
-     * sparsity check, the line search's energies, the penetrations) until
-     * some vertex has moved more than @f$m/2@f$ since: boxes that overlap
-     * at the new positions overlapped, enlarged by @f$m@f$, at the old ones,
-     * so the list holds every pair the search would find (a Verlet list).
-     * The extra pairs do not intersect and add nothing.
+     * a margin @f$m@f$ at each vertex's reference position and shared by
+     * every call (residual and tangent, the sparsity check, the line
+     * search's energies, the penetrations): boxes that overlap at positions
+     * within @f$m/2@f$ of the references overlapped, enlarged by @f$m@f$, at
+     * the references, so the list holds every pair a search would find (a
+     * Verlet list). A vertex that moves farther gets a new reference, and
+     * only the pairs it belongs to are searched again. The extra pairs do
+     * not intersect and add nothing.
      */
     class BodyContactAssembler : public ContactInteraction
     {
@@ -178,12 +180,15 @@ namespace TissueContact
         unsigned int t, k, pair;
       };
       /** The candidate list: the candidates of surface_triangles[i] are
-       * candidates[offsets[i]] .. candidates[offsets[i + 1] - 1], in the
-       * tree walk's order (the order of the sums). */
+       * candidates[offsets[i]] .. candidates[offsets[i + 1] - 1], sorted
+       * by tetrahedron and pair (the order of the sums). */
       mutable std::vector<Candidate>    candidates;
       mutable std::vector<unsigned int> offsets;
-      mutable std::vector<Point<3>>     x_at_candidates;
-      mutable bool                      have_candidates = false;
+      /** Each vertex's position when the pairs it belongs to were last
+       * searched for: the list holds every pair whose boxes at these
+       * positions overlap once the triangle's is enlarged by the margin. */
+      mutable std::vector<Point<3>> x_reference;
+      mutable bool                  have_candidates = false;
       /** The candidates that passed rejected() in the last evaluation that
        * tested them all: survivors[i] indexes those of surface_triangles[i]
        * in the list, in the list's order, at the positions
@@ -199,10 +204,17 @@ namespace TissueContact
        * diagonal. */
       double candidate_margin = 0.;
 
-      /** Make the candidate list valid for the positions @p x (search
-       * again if a vertex moved more than half the margin). */
+      /** Make the candidate list valid for the positions @p x: the
+       * vertices that moved more than half the margin from their reference
+       * positions get new ones, and the pairs of their triangles and
+       * tetrahedra are searched for again (all pairs, if more than half
+       * the tetrahedra moved). */
       void
       update_candidates(const std::vector<Point<3>> &x) const;
+
+      /** The bounding box of tetrahedron k at the positions @p x. */
+      BoundingBox<3>
+      tet_box(const std::vector<Point<3>> &x, const unsigned int k) const;
 
       /** WorkStream over the surface triangles: @p worker(i, copy) for
        * surface_triangles[i] in parallel, @p copier(copy) serially in the
@@ -281,6 +293,18 @@ namespace TissueContact
                             const std::vector<Point<3>> &x,
                             const double                 margin,
                             const F                     &f) const;
+
+      /** for_each_candidate_of() among the tetrahedra of the tree @p in,
+       * whose object i is tetrahedron tet_of[i] (or i, if @p tet_of is
+       * empty). */
+      template <typename F>
+      void
+      for_each_candidate_in(const BoundingVolumeTree        &in,
+                            const std::vector<unsigned int> &tet_of,
+                            const unsigned int               t,
+                            const std::vector<Point<3>>     &x,
+                            const double                     margin,
+                            const F                         &f) const;
       /** Whether triangle @p t belongs to the surface body of a pair. */
       bool
       surface_of_a_pair(const unsigned int t) const;
