@@ -315,8 +315,10 @@ namespace TissueContact
     {
       if (have_survivors && x == x_at_survivors)
         return true;
-      have_survivors = false;
+      have_survivors   = false;
+      have_with_energy = false;
       survivors.resize(surface_triangles.size());
+      with_energy.resize(surface_triangles.size());
       return false;
     }
 
@@ -739,7 +741,8 @@ namespace TissueContact
       // add_couplings() adds whole 3 x 3 vertex blocks, so one entry per
       // vertex pair tells, and only the pairs across the tetrahedron and
       // the triangle can be missing. The triangles in parallel.
-      bool all = true;
+      const bool energies_known = known && have_with_energy;
+      bool       all            = true;
       struct Has
       {
         bool all = true;
@@ -748,6 +751,22 @@ namespace TissueContact
         [&](const unsigned int i, Has &c) {
           bool &has = c.all;
           has       = true;
+          // the couplings across (add_couplings())
+          const auto coupled = [&](const unsigned int t, const unsigned int k) {
+            const auto dofs = pair_dofs(t, k);
+            for (unsigned int a = 0; a < 4 && has; ++a)
+              for (unsigned int b = 4; b < 7; ++b)
+                has = has && pattern.exists(dofs[3 * a], dofs[3 * b]) &&
+                      pattern.exists(dofs[3 * b], dofs[3 * a]);
+          };
+          if (energies_known)
+            {
+              for (const unsigned int k : with_energy[i])
+                if (has)
+                  coupled(surface_triangles[i], k);
+              return;
+            }
+          with_energy[i].clear();
           for_each_surviving_pair_of(
             i,
             x,
@@ -756,22 +775,18 @@ namespace TissueContact
                 const unsigned int  k,
                 const BodyContact  &p,
                 const PairGeometry &geometry) {
-              if (!has)
-                return;
               const auto &[tet, tri, g] = geometry;
               if (!(method_of(p).energy(tet, tri, g, p.penalty) > 0.))
                 return;
-              // the couplings across (add_couplings())
-              const auto dofs = pair_dofs(t, k);
-              for (unsigned int a = 0; a < 4 && has; ++a)
-                for (unsigned int b = 4; b < 7; ++b)
-                  has = has && pattern.exists(dofs[3 * a], dofs[3 * b]) &&
-                        pattern.exists(dofs[3 * b], dofs[3 * a]);
+              with_energy[i].push_back(k);
+              if (has)
+                coupled(t, k);
             });
         },
         [&](const Has &c) { all = all && c.all; },
         Has());
       end_survivors(x);
+      have_with_energy = true;
       return all;
     }
 
@@ -911,18 +926,21 @@ namespace TissueContact
       per_surface_triangle(
         [&](const unsigned int i, Energies &e) {
           e.clear();
-          for_each_surviving_pair_of(
-            i,
-            x,
-            known,
-            [&](const unsigned int,
-                const unsigned int,
-                const BodyContact  &p,
-                const PairGeometry &geometry) {
-              const auto &[tet, tri, g] = geometry;
-              e.emplace_back(&p - pairs.data(),
-                             method_of(p).energy(tet, tri, g, p.penalty));
-            });
+          with_energy[i].clear();
+          for_each_surviving_pair_of(i,
+                                     x,
+                                     known,
+                                     [&](const unsigned int,
+                                         const unsigned int  k,
+                                         const BodyContact  &p,
+                                         const PairGeometry &geometry) {
+                                       const auto &[tet, tri, g] = geometry;
+                                       const double w = method_of(p).energy(
+                                         tet, tri, g, p.penalty);
+                                       e.emplace_back(&p - pairs.data(), w);
+                                       if (w > 0.)
+                                         with_energy[i].push_back(k);
+                                     });
         },
         [&](const Energies &e) {
           for (const auto &[p, w] : e)
@@ -930,6 +948,7 @@ namespace TissueContact
         },
         Energies());
       end_survivors(x);
+      have_with_energy = true;
       return W;
     }
   } // namespace Contact

@@ -198,6 +198,13 @@ namespace TissueContact
       mutable std::vector<std::vector<unsigned int>> survivors;
       mutable std::vector<Point<3>>                  x_at_survivors;
       mutable bool                                   have_survivors = false;
+      /** Of the survivors of surface_triangles[i], the tetrahedra of those
+       * with energy at x_at_survivors (an energy pass or a sparsity check
+       * over them records them): the sparsity check that follows the line
+       * search's energy at the same positions looks only at these, without
+       * computing their energies again. */
+      mutable std::vector<std::vector<unsigned int>> with_energy;
+      mutable bool                                   have_with_energy = false;
       /** The triangles of the surface bodies of the pairs. */
       std::vector<unsigned int> surface_triangles;
       /** The list's margin m: a tenth of the mean tetrahedron box
