@@ -369,6 +369,43 @@ namespace TissueContact
     }
 
 
+    template <typename F>
+    void
+    BodyContactAssembler::for_each_pair_with_energy(
+      const unsigned int           i,
+      const std::vector<Point<3>> &x,
+      const bool                   known,
+      const F                     &f) const
+    {
+      if (known && have_with_energy)
+        {
+          for (const unsigned int c : with_energy[i])
+            f(candidates[c].t,
+              candidates[c].k,
+              pairs[candidates[c].pair],
+              pair_geometry(x, candidates[c].t, candidates[c].k));
+          return;
+        }
+      with_energy[i].clear();
+      unsigned int j = 0; // the survivor of the call: survivors[i][j]
+      for_each_surviving_pair_of(
+        i,
+        x,
+        known,
+        [&](const unsigned int  t,
+            const unsigned int  k,
+            const BodyContact  &p,
+            const PairGeometry &geometry) {
+          const unsigned int c      = survivors[i][j++];
+          const auto &[tet, tri, g] = geometry;
+          if (!(method_of(p).energy(tet, tri, g, p.penalty) > 0.))
+            return;
+          with_energy[i].push_back(c);
+          f(t, k, p, geometry);
+        });
+    }
+
+
     BodyContactAssembler::PairGeometry
     BodyContactAssembler::pair_geometry(const std::vector<Point<3>> &x,
                                         const unsigned int           t,
@@ -577,26 +614,22 @@ namespace TissueContact
         [&](const unsigned int i, PairKernel &scratch) {
           std::vector<PairResult> &results = pair_results[i];
           results.clear();
-          for_each_surviving_pair_of(
-            i,
-            x,
-            known,
-            [&](const unsigned int  t,
-                const unsigned int  k,
-                const BodyContact  &p,
-                const PairGeometry &geometry) {
-              const auto &[tet, tri, g] = geometry;
-              if (method_of(p).kernel(
-                    tet, tri, g, p.penalty, with_hessian, scratch))
-                results.push_back({t,
-                                   k,
-                                   static_cast<unsigned int>(&p - pairs.data()),
-                                   scratch});
-            });
+          const auto evaluate = [&](const unsigned int  t,
+                                    const unsigned int  k,
+                                    const BodyContact  &p,
+                                    const PairGeometry &geometry) {
+            const auto &[tet, tri, g] = geometry;
+            if (method_of(p).kernel(
+                  tet, tri, g, p.penalty, with_hessian, scratch))
+              results.push_back(
+                {t, k, static_cast<unsigned int>(&p - pairs.data()), scratch});
+          };
+          for_each_pair_with_energy(i, x, known, evaluate);
         },
         [](const PairKernel &) {},
         PairKernel());
       end_survivors(x);
+      have_with_energy = true;
     }
 
 
@@ -741,8 +774,7 @@ namespace TissueContact
       // add_couplings() adds whole 3 x 3 vertex blocks, so one entry per
       // vertex pair tells, and only the pairs across the tetrahedron and
       // the triangle can be missing. The triangles in parallel.
-      const bool energies_known = known && have_with_energy;
-      bool       all            = true;
+      bool all = true;
       struct Has
       {
         bool all = true;
@@ -751,36 +783,20 @@ namespace TissueContact
         [&](const unsigned int i, Has &c) {
           bool &has = c.all;
           has       = true;
-          // the couplings across (add_couplings())
-          const auto coupled = [&](const unsigned int t, const unsigned int k) {
-            const auto dofs = pair_dofs(t, k);
-            for (unsigned int a = 0; a < 4 && has; ++a)
-              for (unsigned int b = 4; b < 7; ++b)
-                has = has && pattern.exists(dofs[3 * a], dofs[3 * b]) &&
-                      pattern.exists(dofs[3 * b], dofs[3 * a]);
-          };
-          if (energies_known)
-            {
-              for (const unsigned int k : with_energy[i])
-                if (has)
-                  coupled(surface_triangles[i], k);
-              return;
-            }
-          with_energy[i].clear();
-          for_each_surviving_pair_of(
+          for_each_pair_with_energy(
             i,
             x,
             known,
-            [&](const unsigned int  t,
-                const unsigned int  k,
-                const BodyContact  &p,
-                const PairGeometry &geometry) {
-              const auto &[tet, tri, g] = geometry;
-              if (!(method_of(p).energy(tet, tri, g, p.penalty) > 0.))
-                return;
-              with_energy[i].push_back(k);
-              if (has)
-                coupled(t, k);
+            [&](const unsigned int t,
+                const unsigned int k,
+                const BodyContact &,
+                const PairGeometry &) {
+              // the couplings across (add_couplings())
+              const auto dofs = pair_dofs(t, k);
+              for (unsigned int a = 0; a < 4 && has; ++a)
+                for (unsigned int b = 4; b < 7; ++b)
+                  has = has && pattern.exists(dofs[3 * a], dofs[3 * b]) &&
+                        pattern.exists(dofs[3 * b], dofs[3 * a]);
             });
         },
         [&](const Has &c) { all = all && c.all; },
@@ -927,20 +943,22 @@ namespace TissueContact
         [&](const unsigned int i, Energies &e) {
           e.clear();
           with_energy[i].clear();
-          for_each_surviving_pair_of(i,
-                                     x,
-                                     known,
-                                     [&](const unsigned int,
-                                         const unsigned int  k,
-                                         const BodyContact  &p,
-                                         const PairGeometry &geometry) {
-                                       const auto &[tet, tri, g] = geometry;
-                                       const double w = method_of(p).energy(
-                                         tet, tri, g, p.penalty);
-                                       e.emplace_back(&p - pairs.data(), w);
-                                       if (w > 0.)
-                                         with_energy[i].push_back(k);
-                                     });
+          unsigned int j = 0; // the survivor of the call: survivors[i][j]
+          for_each_surviving_pair_of(
+            i,
+            x,
+            known,
+            [&](const unsigned int,
+                const unsigned int,
+                const BodyContact  &p,
+                const PairGeometry &geometry) {
+              const auto &[tet, tri, g] = geometry;
+              const double w = method_of(p).energy(tet, tri, g, p.penalty);
+              e.emplace_back(&p - pairs.data(), w);
+              if (w > 0.)
+                with_energy[i].push_back(survivors[i][j]);
+              ++j;
+            });
         },
         [&](const Energies &e) {
           for (const auto &[p, w] : e)

@@ -198,11 +198,13 @@ namespace TissueContact
       mutable std::vector<std::vector<unsigned int>> survivors;
       mutable std::vector<Point<3>>                  x_at_survivors;
       mutable bool                                   have_survivors = false;
-      /** Of the survivors of surface_triangles[i], the tetrahedra of those
-       * with energy at x_at_survivors (an energy pass or a sparsity check
-       * over them records them): the sparsity check that follows the line
-       * search's energy at the same positions looks only at these, without
-       * computing their energies again. */
+      /** Of the survivors of surface_triangles[i], those with energy at
+       * x_at_survivors (indices into the list), recorded by every pass over
+       * the survivors: the pairs the assembly adds and the sparsity check
+       * must find coupled. A pass that follows at the same positions (the
+       * residual and tangent and the sparsity check after the line
+       * search's accepted energy) visits only these, without computing
+       * their energies again (doc/theory/05-contact.md, sec. 2.1). */
       mutable std::vector<std::vector<unsigned int>> with_energy;
       mutable bool                                   have_with_energy = false;
       /** The triangles of the surface bodies of the pairs. */
@@ -274,6 +276,19 @@ namespace TissueContact
        * follows (the return value false tells it to record). */
       bool
       begin_survivors(const std::vector<Point<3>> &x) const;
+
+      /** Call @p f(t, k, pair, geometry) for every survivor of
+       * surface_triangles[i] at the positions @p x (@p known as for
+       * for_each_surviving_pair_of()) whose energy is positive: those in
+       * with_energy if they are known at these positions, else each
+       * survivor's energy decides and with_energy[i] is recorded anew (the
+       * caller sets have_with_energy after the pass). */
+      template <typename F>
+      void
+      for_each_pair_with_energy(const unsigned int           i,
+                                const std::vector<Point<3>> &x,
+                                const bool                   known,
+                                const F                     &f) const;
 
       /** The survivors recorded by a pass at the positions @p x are
        * valid. */
