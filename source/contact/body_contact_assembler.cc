@@ -160,8 +160,8 @@ namespace TissueContact
           moved_tree = std::make_unique<BoundingVolumeTree>(boxes);
         }
       std::vector<bool> tet_moved(search_all ? 0 : tets.size());
-      for (const unsigned int k : moved_tets)
-        if (!search_all)
+      if (!search_all)
+        for (const unsigned int k : moved_tets)
           tet_moved[k] = true;
       // the triangles in parallel (the trees are only read), each list
       // sorted by tetrahedron and pair: the same list whichever way it was
