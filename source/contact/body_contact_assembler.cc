@@ -178,8 +178,10 @@ namespace TissueContact
           const auto         keep = [&](const unsigned int t,
                                 const unsigned int k,
                                 const BodyContact &p) {
-            found.push_back(
-              {t, k, static_cast<unsigned int>(&p - pairs.data())});
+            found.push_back({t,
+                             k,
+                             static_cast<unsigned int>(&p - pairs.data()),
+                             shared_vertices(t, k)});
           };
           if (search_all || has_moved(surface.triangles[t]))
             for_each_candidate_of(t, x_reference, candidate_margin, keep);
@@ -223,6 +225,20 @@ namespace TissueContact
       const auto &t = tets[k];
       return BoundingBox<3>(
         std::array<Point<3>, 4>{{x[t[0]], x[t[1]], x[t[2]], x[t[3]]}});
+    }
+
+
+    BodyContactAssembler::SharedVertices
+    BodyContactAssembler::shared_vertices(const unsigned int t,
+                                          const unsigned int k) const
+    {
+      const auto    &kv = tets[k];
+      SharedVertices shared;
+      for (unsigned int a = 0; a < 3; ++a)
+        shared[a] = static_cast<unsigned char>(
+          std::find(kv.begin(), kv.end(), surface.triangles[t][a]) -
+          kv.begin());
+      return shared;
     }
 
 
@@ -358,7 +374,7 @@ namespace TissueContact
             pair_geometry(x, candidates[c].t, candidates[c].k);
           // cheap rejection before differentiating: zero energy near this
           // position has zero gradient and Hessian
-          if (rejected(candidates[c].t, candidates[c].k, geometry))
+          if (rejected(candidates[c].shared, geometry))
             continue;
           found.push_back(c);
           f(candidates[c].t,
@@ -420,27 +436,28 @@ namespace TissueContact
 
 
     bool
-    BodyContactAssembler::rejected(const unsigned int  t,
-                                   const unsigned int  k,
-                                   const PairGeometry &geometry) const
+    BodyContactAssembler::rejected(const SharedVertices &shared,
+                                   const PairGeometry   &geometry) const
     {
       // (a tetrahedron of zero depth at all four vertices never gets here:
       // it is not in the tree)
       const auto &[tet, tri, g] = geometry;
+      const bool touching = shared[0] < 4 || shared[1] < 4 || shared[2] < 4;
       // the boxes of triangle and tetrahedron apart by more than 1e-6 of the
       // tetrahedron's size: the clipping could not find a point within
       // roundoff of both, so the pair has no intersection. Cheaper than the
-      // tests below
-      {
-        const BoundingBox<3> tet_box(tet), tri_box(tri);
-        const auto &[lo, hi]         = tet_box.get_boundary_points();
-        const auto &[tri_lo, tri_hi] = tri_box.get_boundary_points();
-        const double gap =
-          1e-6 * (hi[0] - lo[0] + hi[1] - lo[1] + hi[2] - lo[2]);
-        for (unsigned int d = 0; d < 3; ++d)
-          if (tri_lo[d] > hi[d] + gap || tri_hi[d] < lo[d] - gap)
-            return true;
-      }
+      // tests below; boxes with a common vertex always overlap
+      if (!touching)
+        {
+          const BoundingBox<3> tet_box(tet), tri_box(tri);
+          const auto &[lo, hi]         = tet_box.get_boundary_points();
+          const auto &[tri_lo, tri_hi] = tri_box.get_boundary_points();
+          const double gap =
+            1e-6 * (hi[0] - lo[0] + hi[1] - lo[1] + hi[2] - lo[2]);
+          for (unsigned int d = 0; d < 3; ++d)
+            if (tri_lo[d] > hi[d] + gap || tri_hi[d] < lo[d] - gap)
+              return true;
+        }
       // barycentric coordinates of the triangle's vertices
       const Tensor<1, 3> e1 = tet[1] - tet[0], e2 = tet[2] - tet[0],
                          e3   = tet[3] - tet[0];
@@ -450,25 +467,23 @@ namespace TissueContact
       const double six_volume = e1 * n1;
       if (!(std::abs(six_volume) > 0.) || !std::isfinite(six_volume))
         return false; // leave a degenerate tetrahedron to the clipping
-      const auto &kv = tets[k];
-      const auto &tv = surface.triangles[t];
       // a face i separates if every vertex is outside it or a vertex of the
       // tetrahedron other than i (on the face)
       std::array<bool, 4> separates{{true, true, true, true}};
       for (unsigned int a = 0; a < 3; ++a)
-        {
-          const auto shared =
-            std::find(kv.begin(), kv.end(), tv[a]) - kv.begin();
-          const Tensor<1, 3>    r = tri[a] - tet[0];
-          std::array<double, 4> lambda;
-          lambda[1] = (r * n1) / six_volume;
-          lambda[2] = (r * n2) / six_volume;
-          lambda[3] = (r * n3) / six_volume;
-          lambda[0] = 1. - lambda[1] - lambda[2] - lambda[3];
-          for (unsigned int i = 0; i < 4; ++i)
-            separates[i] =
-              separates[i] && (shared < 4 ? shared != i : lambda[i] < -1e-6);
-        }
+        if (shared[a] < 4)
+          separates[shared[a]] = false;
+        else
+          {
+            const Tensor<1, 3>    r = tri[a] - tet[0];
+            std::array<double, 4> lambda;
+            lambda[1] = (r * n1) / six_volume;
+            lambda[2] = (r * n2) / six_volume;
+            lambda[3] = (r * n3) / six_volume;
+            lambda[0] = 1. - lambda[1] - lambda[2] - lambda[3];
+            for (unsigned int i = 0; i < 4; ++i)
+              separates[i] = separates[i] && lambda[i] < -1e-6;
+          }
       if (separates[0] || separates[1] || separates[2] || separates[3])
         return true;
       // the triangle's plane separates if every vertex of the tetrahedron
@@ -483,7 +498,7 @@ namespace TissueContact
       bool         above = true, below = true;
       for (unsigned int j = 0; j < 4; ++j)
         {
-          if (std::find(tv.begin(), tv.end(), kv[j]) != tv.end())
+          if (shared[0] == j || shared[1] == j || shared[2] == j)
             continue;
           const double d = normal * (tet[j] - tri[0]) / n;
           above          = above && d > limit;
@@ -755,7 +770,7 @@ namespace TissueContact
         if (g[j] > 0. && normal * (tet[j] - tri[0]) / n > -margin)
           return true;
       // a pair pressed through, with energy now, keeps its couplings
-      return !rejected(t, k, geometry) &&
+      return !rejected(shared_vertices(t, k), geometry) &&
              method_of(p).energy(tet, tri, g, p.penalty) > 0.;
     }
 

@@ -175,9 +175,16 @@ namespace TissueContact
 
       /** A (triangle, tetrahedron) pair whose boxes overlap, and the index
        * of its body pair in pairs. */
+      /** For each vertex of a triangle, its index among the vertices of a
+       * tetrahedron, 4 if it is none of them. */
+      using SharedVertices = std::array<unsigned char, 3>;
+      /** The vertices triangle t shares with tetrahedron k. */
+      SharedVertices
+      shared_vertices(const unsigned int t, const unsigned int k) const;
       struct Candidate
       {
-        unsigned int t, k, pair;
+        unsigned int   t, k, pair;
+        SharedVertices shared; // shared_vertices(t, k)
       };
       /** The candidate list: the candidates of surface_triangles[i] are
        * candidates[offsets[i]] .. candidates[offsets[i + 1] - 1], sorted
@@ -342,8 +349,8 @@ namespace TissueContact
                     const unsigned int           t,
                     const unsigned int           k) const;
 
-      /** Whether the pair (triangle t, tetrahedron k) at @p geometry
-       * certainly has zero energy near this position, tested before the
+      /** Whether the pair (triangle t, tetrahedron k, sharing the vertices
+       * @p shared) at @p geometry certainly has zero energy near this position, tested before the
        * clipping (doc/theory/05-contact.md, sec. 2.2), for a candidate of
        * for_each_candidate_of() (which has dropped the tetrahedra of zero
        * depth at all four vertices): the boxes are apart, or a face plane of
@@ -356,9 +363,8 @@ namespace TissueContact
        * beyond 1e-6 of the triangle's size on one side, or a vertex of the
        * triangle). */
       bool
-      rejected(const unsigned int  t,
-               const unsigned int  k,
-               const PairGeometry &geometry) const;
+      rejected(const SharedVertices &shared,
+               const PairGeometry   &geometry) const;
 
       /** Whether the candidate pair (triangle t, tetrahedron k) at the
        * positions @p x is coupled in the matrix pattern: it has energy now,
