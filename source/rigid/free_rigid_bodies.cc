@@ -165,14 +165,39 @@ namespace TissueContact
         return;
 
       // K T: every slave column s moves to its body's columns, times J_s;
-      // each row changes only itself: the rows in parallel
+      // each row changes only itself: the rows in parallel. Only the rows
+      // with a slave column change, and the pattern is symmetric (the
+      // elements', the contact pairs' and add_couplings()' are), so they
+      // are the columns of the slaves' rows: on the full knee 3 150 of 29 706
+      // rows (a sampling profile of its first 8 increments: condense() 3.1 %
+      // of the samples with the pass over all rows, 1.6 % without)
+      std::vector<bool> has_slave_column(K->m(), false);
+      for (const auto &body_slaves : slaves)
+        for (const auto s : body_slaves)
+          for (auto e = K->begin(s); e != K->end(s); ++e)
+            has_slave_column[e->column()] = true;
+      std::vector<types::global_dof_index> coupled_rows;
+      for (types::global_dof_index i = 0; i < K->m(); ++i)
+        if (has_slave_column[i])
+          coupled_rows.push_back(i);
+      Assert(
+        [&]() {
+          for (types::global_dof_index i = 0; i < K->m(); ++i)
+            if (!has_slave_column[i])
+              for (auto e = K->begin(i); e != K->end(i); ++e)
+                if (e->column() < n_fe && owner[e->column()] >= 0)
+                  return false;
+          return true;
+        }(),
+        ExcMessage("the pattern of K is not symmetric in the slaves' rows"));
       parallel::apply_to_subranges(
-        types::global_dof_index(0),
-        K->m(),
-        [&](const types::global_dof_index begin,
-            const types::global_dof_index end) {
-          for (types::global_dof_index i = begin; i < end; ++i)
-            for (auto e = K->begin(i); e != K->end(i); ++e)
+        std::size_t(0),
+        coupled_rows.size(),
+        [&](const std::size_t begin, const std::size_t end) {
+          for (std::size_t r = begin; r < end; ++r)
+            for (auto e = K->begin(coupled_rows[r]);
+                 e != K->end(coupled_rows[r]);
+                 ++e)
               {
                 const auto j = e->column();
                 if (j >= n_fe || owner[j] < 0 || e->value() == 0.)
@@ -183,10 +208,10 @@ namespace TissueContact
                 const auto  q  = first_unknown(owner[j]);
                 for (unsigned int m = 0; m < 6; ++m)
                   if (Js[m] != 0.)
-                    K->add(i, q + m, v * Js[m]);
+                    K->add(coupled_rows[r], q + m, v * Js[m]);
               }
         },
-        256);
+        64);
       // T^T (K T): every slave row moves to its body's rows, then becomes
       // the identity's. Each of a body's six rows gathers from all its
       // slaves' rows, in the slaves' order (the sums as if done one after
