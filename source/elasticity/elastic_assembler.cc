@@ -25,10 +25,11 @@ namespace TissueContact
       /** Per-thread work space of the cell kernel. */
       struct ScratchData
       {
-        // per node a: the Voigt strain-displacement matrix B_a (6 x 3,
-        // stored [p * 3 + i]), D B_a, and S grad N_a
-        std::vector<std::array<double, 18>> B, DB;
-        std::vector<Tensor<1, 3>>           Sg;
+        // per node a: the spatial gradient n_a = F^-T grad N_a, the three
+        // columns of c b_a (stored [p * 3 + k]) and tau n_a
+        std::vector<Tensor<1, 3>>           n;
+        std::vector<std::array<double, 18>> cb;
+        std::vector<Tensor<1, 3>>           tau_n;
         // dv_e/dx_a of the mean dilatation (doc/theory/09, (D2))
         std::vector<Tensor<1, 3>> dv;
         // the material's response at a point (each evaluation sets what
@@ -43,37 +44,36 @@ namespace TissueContact
         Vector<double>     r;
         unsigned int       cell  = 0;
         bool               valid = true;
+        /** only K's node blocks (a, b) with a <= b are set: the copier adds
+         * each block of the lower part as the transpose of its mirror */
+        bool upper = false;
       };
 
       /**
        * Add the element terms of a pressure @f$\bar p@f$ constant over the
        * element, the mean of its vertex pressures ((N3), (N5) of
        * doc/theory/08-nodal-pressure.md) or its mean dilatation's
-       * ((D3), (D4) of doc/theory/09-mean-dilatation.md):
-       * @f$S_p = \bar p J C^{-1}@f$ and, when @p CC is not null,
+       * ((D3), (D4) of doc/theory/09-mean-dilatation.md), in the spatial
+       * form of the assembly: @f$S_p = \bar p J C^{-1}@f$ and
        * @f$\mathbb{C}_p = \bar p J (C^{-1}\otimes C^{-1} - 2 C^{-1}\odot
-       * C^{-1})@f$.
+       * C^{-1})@f$ pushed forward, @f$\tau_p = \bar p J I@f$ and, when
+       * @p c is not null, @f$c_p = \bar p J (I\otimes I - 2\,I\odot I)@f$
+       * (doc/theory/03-materials.md, (M3S)).
        */
       void
-      add_pressure(const Tensor<2, 3>    &F,
-                   const double           p,
-                   SymmetricTensor<2, 3> &S,
-                   VoigtTangent          *CC)
+      add_pressure(const double pJ, SymmetricTensor<2, 3> &tau, VoigtTangent *c)
       {
-        const SymmetricTensor<2, 3> Ci = invert(symmetrize(transpose(F) * F));
-        const double                pJ = p * determinant(F);
-        S += pJ * Ci;
-        if (CC == nullptr)
+        for (unsigned int i = 0; i < 3; ++i)
+          tau[i][i] += pJ;
+        if (c == nullptr)
           return;
-        const auto &voigt = VoigtTangent::index;
-        for (unsigned int a = 0; a < 6; ++a)
-          for (unsigned int b = 0; b < 6; ++b)
-            {
-              const unsigned int I = voigt[a][0], J = voigt[a][1];
-              const unsigned int K = voigt[b][0], L = voigt[b][1];
-              CC->D[a][b] += pJ * (Ci[I][J] * Ci[K][L] - Ci[I][K] * Ci[J][L] -
-                                   Ci[I][L] * Ci[J][K]);
-            }
+        for (unsigned int p = 0; p < 6; ++p)
+          {
+            if (p < 3)
+              for (unsigned int q = 0; q < 3; ++q)
+                c->D[p][q] += pJ;
+            c->D[p][p] -= p < 3 ? 2. * pJ : pJ;
+          }
       }
 
       /**
@@ -410,232 +410,260 @@ namespace TissueContact
             dv.resize(nodal->n_elements());
         }
 
-      const auto worker =
-        [&](const std::vector<unsigned int>::const_iterator &it,
-            ScratchData                                     &s,
-            CopyData                                        &copy) {
-          const unsigned int c = *it;
-          copy.cell            = c;
-          copy.valid           = true;
-          copy.r.reinit(n_local);
-          if (K != nullptr)
-            copy.K.reinit(n_local, n_local);
-          // the element matrix, row by row (local dof 3 a + i: node a,
-          // component i)
-          double *const Kc = K != nullptr ? &copy.K(0, 0) : nullptr;
-          s.B.resize(n_nodes);
-          s.DB.resize(n_nodes);
-          s.Sg.resize(n_nodes);
-
-          const Materials::Material             *material = cell_material[c];
-          const Materials::HyperelasticMaterial *hyper = cell_hyperelastic[c];
-          Materials::MaterialResponse           &m     = s.m;
-          SymmetricTensor<2, 3>                  S;
-          VoigtTangent                          &CC = s.CC;
-
-          if (!single_rotation_index.empty() && single_rotation_index[c] >= 0)
-            {
-              // one rotation per element (doc/theory/10, (SR4), (SR5));
-              // inverted where det F <= 0 at a point, as the others
-              std::array<Point<3>, 10>    x;
-              std::array<double, 30>      r;
-              std::array<double, 30 * 30> H;
-              const SingleRotationElement e =
-                single_rotation_element(c, u, x.data());
-              for (unsigned int q = 0; q < n_q; ++q)
-                if (!(determinant(deformation_gradient(c, q, u)) > 0.))
-                  copy.valid = false;
-              if (!copy.valid || !e.gradient(x.data(),
-                                             r.data(),
-                                             K != nullptr ? H.data() : nullptr))
-                {
-                  copy.valid = false;
-                  return;
-                }
-              for (unsigned int p = 0; p < n_local; ++p)
-                {
-                  copy.r[p] = r[p];
-                  if (K != nullptr)
-                    for (unsigned int q = 0; q < n_local; ++q)
-                      copy.K(p, q) = H[p * n_local + q];
-                }
-              return;
-            }
-
-          // the mean dilatation's pressure and U''/V_e (doc/theory/09)
-          const double kappa_e =
-            mean_dilatation_kappa.empty() ? 0. : mean_dilatation_kappa[c];
-          double p_e = 0., ddU_V = 0.;
-          if (kappa_e > 0.)
-            {
-              double       V0    = 0.;
-              const double J_bar = mean_dilatation(c, u, V0);
-              if (!(J_bar > 0.))
-                {
-                  copy.valid = false;
-                  return;
-                }
-              const Materials::VolumetricEnergy U{kappa_e};
-              p_e   = U.dU(J_bar);
-              ddU_V = U.ddU(J_bar) / V0;
-              s.dv.assign(n_nodes, Tensor<1, 3>());
-            }
-
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              const Tensor<2, 3> F = deformation_gradient(c, q, u);
-              if (!(determinant(F) > 0.))
-                {
-                  copy.valid = false;
-                  return;
-                }
-              const double        w = JxW[c * n_q + q];
-              const Point<3>     &X = X_q[c * n_q + q];
-              const Tensor<1, 3> *g = &grad_N[(c * n_q + q) * n_nodes];
-
-              if (hyper != nullptr)
-                {
-                  // S, CC of C = F^T F; P = F S
-                  hyper->stress_C(symmetrize(transpose(F) * F),
-                                  X,
-                                  S,
-                                  K != nullptr ? &CC : nullptr);
-                  if (kappa_e > 0.)
-                    {
-                      add_pressure(F, p_e, S, K != nullptr ? &CC : nullptr);
-                      if (K != nullptr)
-                        {
-                          // dv_e/dx_a += w cof(F) grad N_a   (D2)
-                          const Tensor<2, 3> cof =
-                            determinant(F) * transpose(invert(F));
-                          for (unsigned int a = 0; a < n_nodes; ++a)
-                            s.dv[a] += w * (cof * g[a]);
-                        }
-                    }
-                  const int k = nodal ? nodal_element[c] : -1;
-                  if (k >= 0)
-                    {
-                      add_pressure(F,
-                                   nodal->element_pressure(vertex_state, k),
-                                   S,
-                                   K != nullptr ? &CC : nullptr);
-                      if (K != nullptr)
-                        {
-                          // dv_e/dx_b = V0_e cof(F) grad N_b   (N2)
-                          const Tensor<2, 3> cof =
-                            determinant(F) * transpose(invert(F));
-                          for (unsigned int a = 0; a < 4; ++a)
-                            dv[k][a] = w * (cof * g[a]);
-                        }
-                    }
-                  m.P = F * static_cast<Tensor<2, 3>>(S);
-                }
-              else if (K == nullptr)
-                m.P = material->first_piola_kirchhoff(F, X);
-              else
-                material->evaluate(F, X, m);
-
-              for (unsigned int k = 0; k < n_local; ++k)
-                copy.r[k] += (m.P[local_component[k]] * g[local_node[k]]) * w;
-
-              if (K == nullptr)
-                continue;
-
-              if (hyper != nullptr)
-                {
-                  // K_ab = B_a^T D B_b + (g_a . S g_b) I   (D = CC in Voigt
-                  // form)
-                  const auto &D = CC.D;
-                  for (unsigned int a = 0; a < n_nodes; ++a)
-                    {
-                      const Tensor<1, 3> &ga = g[a];
-                      auto               &b  = s.B[a];
-                      for (unsigned int i = 0; i < 3; ++i)
-                        {
-                          b[0 * 3 + i] = F[i][0] * ga[0];
-                          b[1 * 3 + i] = F[i][1] * ga[1];
-                          b[2 * 3 + i] = F[i][2] * ga[2];
-                          b[3 * 3 + i] = F[i][1] * ga[2] + F[i][2] * ga[1];
-                          b[4 * 3 + i] = F[i][0] * ga[2] + F[i][2] * ga[0];
-                          b[5 * 3 + i] = F[i][0] * ga[1] + F[i][1] * ga[0];
-                        }
-                      // the three columns of D B_a side by side
-                      for (unsigned int p = 0; p < 6; ++p)
-                        {
-                          double v0 = 0., v1 = 0., v2 = 0.;
-                          for (unsigned int r = 0; r < 6; ++r)
-                            {
-                              v0 += D[p][r] * b[r * 3 + 0];
-                              v1 += D[p][r] * b[r * 3 + 1];
-                              v2 += D[p][r] * b[r * 3 + 2];
-                            }
-                          s.DB[a][p * 3 + 0] = v0;
-                          s.DB[a][p * 3 + 1] = v1;
-                          s.DB[a][p * 3 + 2] = v2;
-                        }
-                      s.Sg[a] = S * ga;
-                    }
-                  for (unsigned int a = 0; a < n_nodes; ++a)
-                    for (unsigned int b = a; b < n_nodes; ++b)
-                      {
-                        const double  geo = g[a] * s.Sg[b];
-                        const double *Ba = s.B[a].data(), *DBb = s.DB[b].data();
-                        for (unsigned int i = 0; i < 3; ++i)
-                          {
-                            double *row = &Kc[(a * 3 + i) * n_local + b * 3];
-                            double  v0  = (i == 0 ? geo : 0.),
-                                   v1   = (i == 1 ? geo : 0.),
-                                   v2   = (i == 2 ? geo : 0.);
-                            for (unsigned int p = 0; p < 6; ++p)
-                              {
-                                v0 += Ba[p * 3 + i] * DBb[p * 3 + 0];
-                                v1 += Ba[p * 3 + i] * DBb[p * 3 + 1];
-                                v2 += Ba[p * 3 + i] * DBb[p * 3 + 2];
-                              }
-                            row[0] += v0 * w;
-                            row[1] += v1 * w;
-                            row[2] += v2 * w;
-                          }
-                      }
-                }
-              else
-                {
-                  // generic two-point tangent: K_ab,ik = g_aJ A_iJkL g_bL
-                  for (unsigned int a = 0; a < n_nodes; ++a)
-                    for (unsigned int b = a; b < n_nodes; ++b)
-                      for (unsigned int i = 0; i < 3; ++i)
-                        for (unsigned int k = 0; k < 3; ++k)
-                          {
-                            double v = 0.;
-                            for (unsigned int J = 0; J < 3; ++J)
-                              for (unsigned int L = 0; L < 3; ++L)
-                                v += g[a][J] * m.A[i][J][k][L] * g[b][L];
-                            copy.K(a * 3 + i, b * 3 + k) += v * w;
-                          }
-                }
-            }
-          if (K != nullptr)
-            // node blocks were filled for a <= b: mirror into the lower part
-            for (unsigned int a = 0; a < n_nodes; ++a)
-              for (unsigned int b = a + 1; b < n_nodes; ++b)
-                for (unsigned int i = 0; i < 3; ++i)
-                  for (unsigned int k = 0; k < 3; ++k)
-                    copy.K(b * 3 + k, a * 3 + i) = copy.K(a * 3 + i, b * 3 + k);
-          if (K != nullptr && kappa_e > 0.)
-            // U''(J_bar) / V_e dv_e/dx_a (x) dv_e/dx_b   (D4)
-            for (unsigned int a = 0; a < n_nodes; ++a)
-              for (unsigned int i = 0; i < 3; ++i)
-                {
-                  const double da = ddU_V * s.dv[a][i];
-                  for (unsigned int b = 0; b < n_nodes; ++b)
-                    for (unsigned int k = 0; k < 3; ++k)
-                      copy.K(a * 3 + i, b * 3 + k) += da * s.dv[b][k];
-                }
-        };
-
       const bool by_position =
         K != nullptr && &K->get_sparsity_pattern() == positions_pattern &&
         K->n_nonzero_elements() == positions_entries;
+      const auto worker = [&](
+                            const std::vector<unsigned int>::const_iterator &it,
+                            ScratchData                                     &s,
+                            CopyData &copy) {
+        const unsigned int c = *it;
+        copy.cell            = c;
+        copy.valid           = true;
+        copy.r.reinit(n_local);
+        const Materials::HyperelasticMaterial *hyper = cell_hyperelastic[c];
+        const bool                             single_rotation =
+          !single_rotation_index.empty() && single_rotation_index[c] >= 0;
+        const double kappa_e =
+          mean_dilatation_kappa.empty() ? 0. : mean_dilatation_kappa[c];
+        // a hyperelastic cell without the mean dilatation's term writes
+        // its node blocks (a, b), a <= b, once (below), and the copier
+        // adds the lower ones as their mirrors' transposes: its matrix is
+        // neither zeroed nor mirrored (the scatter of the rest needs both)
+        copy.upper = by_position && hyper != nullptr && !single_rotation &&
+                     !(kappa_e > 0.);
+        if (copy.upper)
+          copy.K.TableBase<2, double>::reinit(TableIndices<2>(n_local, n_local),
+                                              true);
+        else if (K != nullptr)
+          copy.K.reinit(n_local, n_local);
+        // the element matrix, row by row (local dof 3 a + i: node a,
+        // component i)
+        double *const Kc = K != nullptr ? &copy.K(0, 0) : nullptr;
+        s.n.resize(n_nodes);
+        s.cb.resize(n_nodes);
+        s.tau_n.resize(n_nodes);
+
+        const Materials::Material   *material = cell_material[c];
+        Materials::MaterialResponse &m        = s.m;
+        SymmetricTensor<2, 3>        tau;
+        VoigtTangent                &CC = s.CC;
+
+        if (single_rotation)
+          {
+            // one rotation per element (doc/theory/10, (SR4), (SR5));
+            // inverted where det F <= 0 at a point, as the others
+            std::array<Point<3>, 10>    x;
+            std::array<double, 30>      r;
+            std::array<double, 30 * 30> H;
+            const SingleRotationElement e =
+              single_rotation_element(c, u, x.data());
+            for (unsigned int q = 0; q < n_q; ++q)
+              if (!(determinant(deformation_gradient(c, q, u)) > 0.))
+                copy.valid = false;
+            if (!copy.valid || !e.gradient(x.data(),
+                                           r.data(),
+                                           K != nullptr ? H.data() : nullptr))
+              {
+                copy.valid = false;
+                return;
+              }
+            for (unsigned int p = 0; p < n_local; ++p)
+              {
+                copy.r[p] = r[p];
+                if (K != nullptr)
+                  for (unsigned int q = 0; q < n_local; ++q)
+                    copy.K(p, q) = H[p * n_local + q];
+              }
+            return;
+          }
+
+        // the mean dilatation's pressure and U''/V_e (doc/theory/09)
+        double p_e = 0., ddU_V = 0.;
+        if (kappa_e > 0.)
+          {
+            double       V0    = 0.;
+            const double J_bar = mean_dilatation(c, u, V0);
+            if (!(J_bar > 0.))
+              {
+                copy.valid = false;
+                return;
+              }
+            const Materials::VolumetricEnergy U{kappa_e};
+            p_e   = U.dU(J_bar);
+            ddU_V = U.ddU(J_bar) / V0;
+            s.dv.assign(n_nodes, Tensor<1, 3>());
+          }
+
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const Tensor<2, 3> F = deformation_gradient(c, q, u);
+            if (!(determinant(F) > 0.))
+              {
+                copy.valid = false;
+                return;
+              }
+            const double        w = JxW[c * n_q + q];
+            const Point<3>     &X = X_q[c * n_q + q];
+            const Tensor<1, 3> *g = &grad_N[(c * n_q + q) * n_nodes];
+
+            if (hyper != nullptr)
+              {
+                // the spatial form (doc/theory/02, (L5), (L6)): tau and
+                // c of the material at F, the spatial gradients
+                // n_a = F^-T grad N_a, R_a = tau n_a w
+                hyper->stress_b(F, X, tau, K != nullptr ? &CC : nullptr);
+                const double       J     = determinant(F);
+                const Tensor<2, 3> F_inv = invert(F);
+                for (unsigned int a = 0; a < n_nodes; ++a)
+                  s.n[a] = g[a] * F_inv; // (F^-T g)_j = g_J F^-1_Jj
+                if (kappa_e > 0.)
+                  {
+                    add_pressure(p_e * J, tau, K != nullptr ? &CC : nullptr);
+                    if (K != nullptr)
+                      // dv_e/dx_a += w cof(F) grad N_a = w J n_a   (D2)
+                      for (unsigned int a = 0; a < n_nodes; ++a)
+                        s.dv[a] += (w * J) * s.n[a];
+                  }
+                const int k = nodal ? nodal_element[c] : -1;
+                if (k >= 0)
+                  {
+                    add_pressure(nodal->element_pressure(vertex_state, k) * J,
+                                 tau,
+                                 K != nullptr ? &CC : nullptr);
+                    if (K != nullptr)
+                      // dv_e/dx_b = V0_e cof(F) grad N_b   (N2)
+                      for (unsigned int a = 0; a < 4; ++a)
+                        dv[k][a] = (w * J) * s.n[a];
+                  }
+                for (unsigned int a = 0; a < n_nodes; ++a)
+                  {
+                    s.tau_n[a] = tau * s.n[a];
+                    for (unsigned int i = 0; i < 3; ++i)
+                      copy.r[3 * a + i] += s.tau_n[a][i] * w;
+                  }
+              }
+            else
+              {
+                if (K == nullptr)
+                  m.P = material->first_piola_kirchhoff(F, X);
+                else
+                  material->evaluate(F, X, m);
+                for (unsigned int k = 0; k < n_local; ++k)
+                  copy.r[k] += (m.P[local_component[k]] * g[local_node[k]]) * w;
+              }
+
+            if (K == nullptr)
+              continue;
+
+            if (hyper != nullptr)
+              {
+                // K_ab = b_a^T c b_b + (n_a . tau n_b) I   (L6), b_a with
+                // three nonzeros per column: n_a in the rows (0, 4, 5),
+                // (1, 3, 5), (2, 3, 4) of columns 0, 1, 2
+                const auto &D = CC.D;
+                for (unsigned int a = 0; a < n_nodes; ++a)
+                  {
+                    const Tensor<1, 3> &na = s.n[a];
+                    // the three columns of c b_a side by side
+                    double *cb = s.cb[a].data();
+                    for (unsigned int p = 0; p < 6; ++p)
+                      {
+                        cb[p * 3 + 0] =
+                          D[p][0] * na[0] + D[p][5] * na[1] + D[p][4] * na[2];
+                        cb[p * 3 + 1] =
+                          D[p][5] * na[0] + D[p][1] * na[1] + D[p][3] * na[2];
+                        cb[p * 3 + 2] =
+                          D[p][4] * na[0] + D[p][3] * na[1] + D[p][2] * na[2];
+                      }
+                  }
+                // row i of b_a^T picks the rows pick[i] of c b_b, with the
+                // entries with[i] of n_a
+                static constexpr unsigned int pick[3][3] = {{0, 4, 5},
+                                                            {1, 3, 5},
+                                                            {2, 3, 4}};
+                static constexpr unsigned int with[3][3] = {{0, 2, 1},
+                                                            {1, 2, 0},
+                                                            {2, 1, 0}};
+                for (unsigned int a = 0; a < n_nodes; ++a)
+                  for (unsigned int b = a; b < n_nodes; ++b)
+                    {
+                      const Tensor<1, 3> &na  = s.n[a];
+                      const double        geo = na * s.tau_n[b];
+                      const double       *cbb = s.cb[b].data();
+                      for (unsigned int i = 0; i < 3; ++i)
+                        {
+                          double *row = &Kc[(a * 3 + i) * n_local + b * 3];
+                          double  v0  = (i == 0 ? geo : 0.),
+                                 v1   = (i == 1 ? geo : 0.),
+                                 v2   = (i == 2 ? geo : 0.);
+                          for (unsigned int t = 0; t < 3; ++t)
+                            {
+                              const double  nt = na[with[i][t]];
+                              const double *cr = cbb + pick[i][t] * 3;
+                              v0 += nt * cr[0];
+                              v1 += nt * cr[1];
+                              v2 += nt * cr[2];
+                            }
+                          // the first point sets the block (it is not
+                          // zeroed on the upper path), the others add
+                          if (q == 0)
+                            {
+                              row[0] = v0 * w;
+                              row[1] = v1 * w;
+                              row[2] = v2 * w;
+                            }
+                          else
+                            {
+                              row[0] += v0 * w;
+                              row[1] += v1 * w;
+                              row[2] += v2 * w;
+                            }
+                        }
+                    }
+              }
+            else
+              {
+                // generic two-point tangent: K_ab,ik = g_aJ A_iJkL g_bL
+                for (unsigned int a = 0; a < n_nodes; ++a)
+                  for (unsigned int b = a; b < n_nodes; ++b)
+                    for (unsigned int i = 0; i < 3; ++i)
+                      for (unsigned int k = 0; k < 3; ++k)
+                        {
+                          double v = 0.;
+                          for (unsigned int J = 0; J < 3; ++J)
+                            for (unsigned int L = 0; L < 3; ++L)
+                              v += g[a][J] * m.A[i][J][k][L] * g[b][L];
+                          copy.K(a * 3 + i, b * 3 + k) += v * w;
+                        }
+              }
+          }
+        if (K != nullptr && hyper != nullptr)
+          // a diagonal block's two halves sum in different orders: the
+          // upper one for both, so that K is symmetric to the last bit
+          for (unsigned int a = 0; a < n_nodes; ++a)
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int k = i + 1; k < 3; ++k)
+                copy.K(a * 3 + k, a * 3 + i) = copy.K(a * 3 + i, a * 3 + k);
+        if (K != nullptr && !copy.upper)
+          // node blocks were filled for a <= b: mirror into the lower part
+          for (unsigned int a = 0; a < n_nodes; ++a)
+            for (unsigned int b = a + 1; b < n_nodes; ++b)
+              for (unsigned int i = 0; i < 3; ++i)
+                for (unsigned int k = 0; k < 3; ++k)
+                  copy.K(b * 3 + k, a * 3 + i) = copy.K(a * 3 + i, b * 3 + k);
+        if (K != nullptr && kappa_e > 0.)
+          // U''(J_bar) / V_e dv_e/dx_a (x) dv_e/dx_b   (D4)
+          for (unsigned int a = 0; a < n_nodes; ++a)
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                const double da = ddU_V * s.dv[a][i];
+                for (unsigned int b = 0; b < n_nodes; ++b)
+                  for (unsigned int k = 0; k < 3; ++k)
+                    copy.K(a * 3 + i, b * 3 + k) += da * s.dv[b][k];
+              }
+      };
+
       double *const       values = by_position ? value_array(*K) : nullptr;
       std::vector<double> row(n_local);
       const auto          copier = [&](const CopyData &copy) {
@@ -652,8 +680,21 @@ namespace TissueContact
             const unsigned int *at =
               &positions[std::size_t(copy.cell) * n_local * n_local];
             const double *k = &copy.K(0, 0);
-            for (unsigned int ij = 0; ij < n_local * n_local; ++ij)
-              values[at[ij]] += k[ij];
+            if (copy.upper)
+              for (unsigned int a = 0; a < n_nodes; ++a)
+                for (unsigned int i = 0; i < 3; ++i)
+                  {
+                    const unsigned int row = 3 * a + i;
+                    for (unsigned int b = 0; b < a; ++b)
+                      for (unsigned int j = 0; j < 3; ++j)
+                        values[at[row * n_local + 3 * b + j]] +=
+                          k[(3 * b + j) * n_local + row];
+                    for (unsigned int col = 3 * a; col < n_local; ++col)
+                      values[at[row * n_local + col]] += k[row * n_local + col];
+                  }
+            else
+              for (unsigned int ij = 0; ij < n_local * n_local; ++ij)
+                values[at[ij]] += k[ij];
           }
         else if (K != nullptr)
           {

@@ -32,6 +32,55 @@ namespace TissueContact
 
 
     void
+    HyperelasticMaterial::stress_b(const Tensor<2, 3>    &F,
+                                   const Point<3>        &X,
+                                   SymmetricTensor<2, 3> &tau,
+                                   VoigtTangent          *c) const
+    {
+      SymmetricTensor<2, 3> S;
+      VoigtTangent          CC;
+      stress_C(right_cauchy_green(F), X, S, c != nullptr ? &CC : nullptr);
+      // tau = F S F^T, its 6 entries
+      const Tensor<2, 3> FS    = F * static_cast<Tensor<2, 3>>(S);
+      const auto        &index = VoigtTangent::index;
+      for (unsigned int p = 0; p < 6; ++p)
+        {
+          const unsigned int i = index[p][0], j = index[p][1];
+          tau[i][j] = FS[i] * F[j];
+        }
+      if (c == nullptr)
+        return;
+      // c = T D T^T: T_pr = F_{i_p I_r} F_{j_p J_r}, plus the transposed
+      // pair for a shear r (doc/theory/02, after (L6))
+      double T[6][6];
+      for (unsigned int p = 0; p < 6; ++p)
+        for (unsigned int r = 0; r < 6; ++r)
+          {
+            const unsigned int i = index[p][0], j = index[p][1];
+            const unsigned int I = index[r][0], J = index[r][1];
+            T[p][r] = F[i][I] * F[j][J] + (I != J ? F[i][J] * F[j][I] : 0.);
+          }
+      double TD[6][6];
+      for (unsigned int p = 0; p < 6; ++p)
+        for (unsigned int s = 0; s < 6; ++s)
+          {
+            double v = 0.;
+            for (unsigned int r = 0; r < 6; ++r)
+              v += T[p][r] * CC.D[r][s];
+            TD[p][s] = v;
+          }
+      for (unsigned int p = 0; p < 6; ++p)
+        for (unsigned int q = p; q < 6; ++q)
+          {
+            double v = 0.;
+            for (unsigned int s = 0; s < 6; ++s)
+              v += TD[p][s] * T[q][s];
+            c->D[p][q] = c->D[q][p] = v;
+          }
+    }
+
+
+    void
     HyperelasticMaterial::evaluate(const Tensor<2, 3> &F,
                                    const Point<3>     &X,
                                    MaterialResponse   &response) const

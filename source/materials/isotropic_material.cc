@@ -4,6 +4,19 @@ namespace TissueContact
 {
   namespace Materials
   {
+    namespace
+    {
+      // (I (x) I - II)_pq in Voigt form: 1 - 1 = 0 on the normal diagonal, 1
+      // between two normal entries, -1/2 on the shear diagonal, 0 elsewhere
+      constexpr double I_minus_II[6][6] = {{0., 1., 1., 0., 0., 0.},
+                                           {1., 0., 1., 0., 0., 0.},
+                                           {1., 1., 0., 0., 0., 0.},
+                                           {0., 0., 0., -0.5, 0., 0.},
+                                           {0., 0., 0., 0., -0.5, 0.},
+                                           {0., 0., 0., 0., 0., -0.5}};
+    } // namespace
+
+
     Invariants
     IsotropicMaterial::invariants(const SymmetricTensor<2, 3> &C)
     {
@@ -64,14 +77,6 @@ namespace TissueContact
             for (unsigned int j = 0; j < 3; ++j)
               h[j][p] += Psi.dd[i][j] * g[i][p];
         }
-      // (I (x) I - II)_pq: 1 - 1 = 0 on the normal diagonal, 1 between two
-      // normal entries, -1/2 on the shear diagonal, 0 elsewhere
-      static constexpr double I_I[6][6] = {{0., 1., 1., 0., 0., 0.},
-                                           {1., 0., 1., 0., 0., 0.},
-                                           {1., 1., 0., 0., 0., 0.},
-                                           {0., 0., 0., -0.5, 0., 0.},
-                                           {0., 0., 0., 0., -0.5, 0.},
-                                           {0., 0., 0., 0., 0., -0.5}};
       for (unsigned int p = 0; p < 6; ++p)
         for (unsigned int q = p; q < 6; ++q)
           {
@@ -79,9 +84,68 @@ namespace TissueContact
             const unsigned int K = index[q][0], L = index[q][1];
             D[p][q] = D[q][p] =
               4. * (h[0][p] * g[0][q] + h[1][p] * g[1][q] + h[2][p] * g[2][q] +
-                    Psi.d[1] * I_I[p][q] +
+                    Psi.d[1] * I_minus_II[p][q] +
                     c3 * (Ci[A][B] * Ci[K][L] -
                           0.5 * (Ci[A][K] * Ci[B][L] + Ci[A][L] * Ci[B][K])));
+          }
+    }
+
+
+    void
+    IsotropicMaterial::stress_b(const Tensor<2, 3> &F,
+                                const Point<3> &,
+                                SymmetricTensor<2, 3> &tau,
+                                VoigtTangent          *c) const
+    {
+      // b = F F^T and b^2; the invariants of b are those of C
+      const SymmetricTensor<2, 3> b   = symmetrize(F * transpose(F));
+      const Invariants            I   = invariants(b);
+      const InvariantDerivatives  Psi = psi_derivatives(I);
+      const SymmetricTensor<2, 3> Id  = unit_symmetric_tensor<3>();
+      SymmetricTensor<2, 3>       b2; // b b (b * b contracts both indices)
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = i; j < 3; ++j)
+          b2[i][j] = b[i][0] * b[0][j] + b[i][1] * b[1][j] + b[i][2] * b[2][j];
+
+      // g_i = F G_i F^T (M3S)
+      const SymmetricTensor<2, 3> g_[3] = {b, I.I1 * b - b2, I.I3 * Id};
+
+      tau = 2. * (Psi.d[0] * g_[0] + Psi.d[1] * g_[1] + Psi.d[2] * g_[2]);
+
+      if (c == nullptr)
+        return;
+
+      // (M3S): (M3V) with I, C, C^-1 replaced by b, b^2, I
+      const auto  &index = VoigtTangent::index;
+      auto        &D     = c->D;
+      const double c3    = Psi.d[2] * I.I3;
+      double       bb[3][3];
+      for (unsigned int A = 0; A < 3; ++A)
+        for (unsigned int B = 0; B < 3; ++B)
+          bb[A][B] = b[A][B];
+      double g[3][6], h[3][6]; // h_j,p = sum_i Psi_ij g_i,p
+      for (unsigned int p = 0; p < 6; ++p)
+        {
+          const unsigned int A = index[p][0], B = index[p][1];
+          for (unsigned int i = 0; i < 3; ++i)
+            g[i][p] = g_[i][A][B];
+          for (unsigned int j = 0; j < 3; ++j)
+            h[j][p] = 0.;
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = 0; j < 3; ++j)
+              h[j][p] += Psi.dd[i][j] * g[i][p];
+        }
+      for (unsigned int p = 0; p < 6; ++p)
+        for (unsigned int q = p; q < 6; ++q)
+          {
+            const unsigned int A = index[p][0], B = index[p][1];
+            const unsigned int K = index[q][0], L = index[q][1];
+            D[p][q] = D[q][p] =
+              4. *
+              (h[0][p] * g[0][q] + h[1][p] * g[1][q] + h[2][p] * g[2][q] +
+               Psi.d[1] * (bb[A][B] * bb[K][L] -
+                           0.5 * (bb[A][K] * bb[B][L] + bb[A][L] * bb[B][K])) +
+               c3 * I_minus_II[p][q]);
           }
     }
   } // namespace Materials

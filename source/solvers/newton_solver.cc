@@ -325,7 +325,13 @@ namespace TissueContact
               s << "Newton did not converge in " << it
                 << " iterations (|R| = " << r << ", tolerance " << tolerance
                 << ")";
-              if (floor > 1e3 * load_tolerance && r < 10. * floor)
+              if (gap_norm > 0.)
+                // with values still to prescribe a step is cut only where
+                // it would invert an element (the line search below)
+                s << ": the prescribed displacements are not reached (still "
+                  << gap_norm
+                  << " to go): every step toward them inverts an element";
+              else if (floor > 1e3 * load_tolerance && r < 10. * floor)
                 s << ": |R| is at the rounding floor of the internal forces ("
                   << floor
                   << "), more than 1e3 times the tolerance the load sets: "

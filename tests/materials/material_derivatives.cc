@@ -11,6 +11,8 @@
 // linear elasticity at small strain and under a 90 degree rotation. The
 // uncoupled forms: a pure dilatation gives the pressure U'(J) whatever the
 // shear parameters, an isochoric deformation a traceless Cauchy stress.
+// Every hyperelastic model's spatial stress and tangent (stress_b(), the
+// closed form (M3S) or the push-forward) against P F^T and A.
 
 #include "../tests.h"
 
@@ -51,11 +53,12 @@ namespace
   check(const Material &m, const double expected_mu, const double expected_l)
   {
     deallog << "--- " << m.name() << std::endl;
-    const double h        = 1e-6;
-    double       err_P    = 0.;
-    double       err_A    = 0.;
-    double       err_obj  = 0.;
-    double       err_part = 0.;
+    const double h           = 1e-6;
+    double       err_P       = 0.;
+    double       err_A       = 0.;
+    double       err_obj     = 0.;
+    double       err_part    = 0.;
+    double       err_spatial = 0.;
     for (unsigned int sample = 0; sample < 20; ++sample)
       {
         const Tensor<2, 3> F = random_deformation_gradient(0.3);
@@ -94,6 +97,36 @@ namespace
                      std::abs(m.energy(F, X0) - r.psi) /
                        std::max(std::abs(r.psi), 1.));
 
+        // the spatial form (doc/theory/02, (L5)): tau = P F^T and
+        // c_ijkl = A_iJkL F_jJ F_lL - delta_ik tau_jl, in Voigt form
+        if (const auto *hyper = dynamic_cast<const HyperelasticMaterial *>(&m))
+          {
+            SymmetricTensor<2, 3> tau;
+            VoigtTangent          c;
+            hyper->stress_b(F, X0, tau, &c);
+            const Tensor<2, 3> tau_P = r.P * transpose(F);
+            double             e_tau = 0., e_c = 0.;
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                e_tau = std::max(e_tau, std::abs(tau[i][j] - tau_P[i][j]));
+            const auto &index = VoigtTangent::index;
+            for (unsigned int p = 0; p < 6; ++p)
+              for (unsigned int q = 0; q < 6; ++q)
+                {
+                  const unsigned int i = index[p][0], j = index[p][1],
+                                     k = index[q][0], l = index[q][1];
+                  double cA = i == k ? -tau_P[j][l] : 0.;
+                  for (unsigned int J = 0; J < 3; ++J)
+                    for (unsigned int L = 0; L < 3; ++L)
+                      cA += r.A[i][J][k][L] * F[j][J] * F[l][L];
+                  e_c = std::max(e_c, std::abs(c.D[p][q] - cA));
+                }
+            err_spatial =
+              std::max(err_spatial,
+                       e_tau / std::max(tau_P.norm(), 1.) +
+                         e_c / std::max(r.A.norm() * F.norm() * F.norm(), 1.));
+          }
+
         // objectivity: P(QF) = Q P(F) and Psi(QF) = Psi(F)
         const Tensor<2, 3> Q  = random_rotation();
         const Tensor<2, 3> QF = Q * F;
@@ -109,6 +142,9 @@ namespace
             << std::endl;
     deallog << "objectivity P(QF) - Q P(F): " << error_bound(err_obj)
             << std::endl;
+    if (dynamic_cast<const HyperelasticMaterial *>(&m) != nullptr)
+      deallog << "spatial tau, c (stress_b) vs P F^T and A: "
+              << error_bound(err_spatial) << std::endl;
 
     // at rest
     MaterialResponse r0;

@@ -31,6 +31,20 @@ namespace TissueContact
                SymmetricTensor<2, 3>       &S,
                VoigtTangent                *CC) const = 0;
 
+      /**
+       * The Kirchhoff stress @f$\tau = FSF^T@f$ and, when @p c is not
+       * null, the spatial tangent @f$c^\tau_{ijkl} = F_{iI}F_{jJ}F_{kK}
+       * F_{lL}\,\mathbb{C}_{IJKL}@f$ in Voigt form (the order and
+       * convention of VoigtTangent) at @p F, for the spatial form of the
+       * tangent (doc/theory/02-weak-form-and-linearization.md, (L5)). By
+       * default pushed forward from stress_C(): @f$c^\tau = TDT^T@f$;
+       * IsotropicMaterial overrides it in closed form.
+       */
+      virtual void
+      stress_b(const Tensor<2, 3>    &F,
+               const Point<3>        &X,
+               SymmetricTensor<2, 3> &tau,
+               VoigtTangent          *c) const;
       double
       energy(const Tensor<2, 3> &F, const Point<3> &X) const override;
 

@@ -35,7 +35,8 @@ namespace TissueContact
      * @f[ \mathbb{C} = 4\Big[\sum_{ij}\Psi_{ij}\,G_i\otimes G_j
      *      + \Psi_2\,(I\otimes I - \mathbb{I})
      *      + \Psi_3\,I_3\,(C^{-1}\otimes C^{-1} - C^{-1}\odot C^{-1})\Big] @f]
-     * (doc/theory/03-materials.md, eqs. (M2)-(M4)). A model only provides
+     * (doc/theory/03-materials.md, eqs. (M2)-(M4)), and the same pushed
+     * forward to the current configuration ((M3S)). A model only provides
      * @f$\Psi@f$ and its first and second invariant derivatives.
      */
     class IsotropicMaterial : public HyperelasticMaterial
@@ -62,6 +63,12 @@ namespace TissueContact
                const Point<3>              &X,
                SymmetricTensor<2, 3>       &S,
                VoigtTangent                *CC) const override;
+      /** (M3S): the closed form of stress_C() pushed forward. */
+      void
+      stress_b(const Tensor<2, 3>    &F,
+               const Point<3>        &X,
+               SymmetricTensor<2, 3> &tau,
+               VoigtTangent          *c) const override;
     };
   } // namespace Materials
 } // namespace TissueContact
