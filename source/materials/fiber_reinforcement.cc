@@ -79,5 +79,24 @@ namespace TissueContact
       if (CC != nullptr)
         CC->add_outer(4. * alpha_f * beta_f * beta_f * e, ff, ff);
     }
+
+
+    void
+    FiberReinforcement::stress_b(const Tensor<2, 3>    &F,
+                                 const Point<3>        &X,
+                                 SymmetricTensor<2, 3> &tau,
+                                 VoigtTangent          *c) const
+    {
+      // stress_C() pushed forward: f (x) f becomes a (x) a with the
+      // stretched fiber a = F f, whose length squared is f . C f
+      ground->stress_b(F, X, tau, c);
+      const Tensor<1, 3>          a   = F * fiber_direction(X);
+      const double                lf2 = a * a;
+      const double                e   = std::exp(beta_f * (lf2 - 1.));
+      const SymmetricTensor<2, 3> aa  = symmetrize(outer_product(a, a));
+      tau += 2. * alpha_f * beta_f * (e - 1.) * aa;
+      if (c != nullptr)
+        c->add_outer(4. * alpha_f * beta_f * beta_f * e, aa, aa);
+    }
   } // namespace Materials
 } // namespace TissueContact

@@ -52,6 +52,12 @@ namespace TissueContact
                const Point<3>              &X,
                SymmetricTensor<2, 3>       &S,
                VoigtTangent                *CC) const override;
+      /** stress_C() pushed forward, in closed form. */
+      void
+      stress_b(const Tensor<2, 3>    &F,
+               const Point<3>        &X,
+               SymmetricTensor<2, 3> &tau,
+               VoigtTangent          *c) const override;
       /** The ground material's equivalents (the fibers add anisotropic
        * stiffness @f$4\alpha_f\beta_f^2@f$ along @f$f\otimes f\otimes f
        * \otimes f@f$ only). */
