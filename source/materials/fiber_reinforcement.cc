@@ -71,13 +71,8 @@ namespace TissueContact
                                  VoigtTangent                *CC) const
     {
       ground->stress_C(C, X, S, CC);
-      const Tensor<1, 3>          f   = fiber_direction(X);
-      const double                lf2 = f * (C * f);
-      const double                e   = std::exp(beta_f * (lf2 - 1.));
-      const SymmetricTensor<2, 3> ff  = symmetrize(outer_product(f, f));
-      S += 2. * alpha_f * beta_f * (e - 1.) * ff;
-      if (CC != nullptr)
-        CC->add_outer(4. * alpha_f * beta_f * beta_f * e, ff, ff);
+      const Tensor<1, 3> f = fiber_direction(X);
+      add_fiber(f, f * (C * f), S, CC);
     }
 
 
@@ -90,13 +85,22 @@ namespace TissueContact
       // stress_C() pushed forward: f (x) f becomes a (x) a with the
       // stretched fiber a = F f, whose length squared is f . C f
       ground->stress_b(F, X, tau, c);
-      const Tensor<1, 3>          a   = F * fiber_direction(X);
-      const double                lf2 = a * a;
-      const double                e   = std::exp(beta_f * (lf2 - 1.));
-      const SymmetricTensor<2, 3> aa  = symmetrize(outer_product(a, a));
-      tau += 2. * alpha_f * beta_f * (e - 1.) * aa;
-      if (c != nullptr)
-        c->add_outer(4. * alpha_f * beta_f * beta_f * e, aa, aa);
+      const Tensor<1, 3> a = F * fiber_direction(X);
+      add_fiber(a, a * a, tau, c);
+    }
+
+
+    void
+    FiberReinforcement::add_fiber(const Tensor<1, 3>    &v,
+                                  const double           lf2,
+                                  SymmetricTensor<2, 3> &stress,
+                                  VoigtTangent          *tangent) const
+    {
+      const double                e  = std::exp(beta_f * (lf2 - 1.));
+      const SymmetricTensor<2, 3> vv = symmetrize(outer_product(v, v));
+      stress += 2. * alpha_f * beta_f * (e - 1.) * vv;
+      if (tangent != nullptr)
+        tangent->add_outer(4. * alpha_f * beta_f * beta_f * e, vv, vv);
     }
   } // namespace Materials
 } // namespace TissueContact

@@ -14,6 +14,66 @@ namespace TissueContact
                                            {0., 0., 0., -0.5, 0., 0.},
                                            {0., 0., 0., 0., -0.5, 0.},
                                            {0., 0., 0., 0., 0., -0.5}};
+
+      /** (X x X - X (.) X)_pq in Voigt form, X symmetric; I_minus_II for
+       * X = I. */
+      double
+      cross_term(const double (&X)[3][3],
+                 const unsigned int p,
+                 const unsigned int q)
+      {
+        const auto        &index = VoigtTangent::index;
+        const unsigned int A = index[p][0], B = index[p][1];
+        const unsigned int K = index[q][0], L = index[q][1];
+        return X[A][B] * X[K][L] -
+               0.5 * (X[A][K] * X[B][L] + X[A][L] * X[B][K]);
+      }
+
+      /**
+       * (M3V), and with pushed-forward tensors (M3S): the 21 entries p <= q
+       * of 4 [sum_ij Psi_ij G_i x G_j + Psi_2 (X2 x X2 - X2 (.) X2) +
+       * Psi_3 I3 (X3 x X3 - X3 (.) X3)], mirrored, each in closed form;
+       * a null X2 or X3 stands for I (the constant table).
+       */
+      void
+      voigt_closed_form(const SymmetricTensor<2, 3> (&G)[3],
+                        const InvariantDerivatives  &Psi,
+                        const double                 I3,
+                        const SymmetricTensor<2, 3> *X2,
+                        const SymmetricTensor<2, 3> *X3,
+                        VoigtTangent                &out)
+      {
+        const auto  &index = VoigtTangent::index;
+        auto        &D     = out.D;
+        const double c3    = Psi.d[2] * I3;
+        double       x2[3][3], x3[3][3]; // as plain arrays (cheap to index)
+        for (unsigned int A = 0; A < 3; ++A)
+          for (unsigned int B = 0; B < 3; ++B)
+            {
+              x2[A][B] = X2 != nullptr ? (*X2)[A][B] : 0.;
+              x3[A][B] = X3 != nullptr ? (*X3)[A][B] : 0.;
+            }
+        double g[3][6], h[3][6]; // h_j,p = sum_i Psi_ij G_i,p
+        for (unsigned int p = 0; p < 6; ++p)
+          {
+            const unsigned int A = index[p][0], B = index[p][1];
+            for (unsigned int i = 0; i < 3; ++i)
+              g[i][p] = G[i][A][B];
+            for (unsigned int j = 0; j < 3; ++j)
+              h[j][p] = 0.;
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                h[j][p] += Psi.dd[i][j] * g[i][p];
+          }
+        for (unsigned int p = 0; p < 6; ++p)
+          for (unsigned int q = p; q < 6; ++q)
+            D[p][q] = D[q][p] =
+              4. *
+              (h[0][p] * g[0][q] + h[1][p] * g[1][q] + h[2][p] * g[2][q] +
+               Psi.d[1] *
+                 (X2 != nullptr ? cross_term(x2, p, q) : I_minus_II[p][q]) +
+               c3 * (X3 != nullptr ? cross_term(x3, p, q) : I_minus_II[p][q]));
+      }
     } // namespace
 
 
@@ -49,45 +109,12 @@ namespace TissueContact
 
       S = 2. * (Psi.d[0] * G[0] + Psi.d[1] * G[1] + Psi.d[2] * G[2]);
 
-      if (CC == nullptr)
-        return;
-
-      // (M3):
-      // sum_ij Psi_ij G_i x G_j
-      //   + Psi_2 (I x I - II)                          [d^2 I2 / dC dC]
-      //   + Psi_3 I3 (C^-1 x C^-1 - C^-1 (.) C^-1)      [d^2 I3 / dC dC]
-      // in Voigt form (M3V): the 21 entries p <= q of D, each in closed
-      // form, mirrored
-      const auto  &index = VoigtTangent::index;
-      auto        &D     = CC->D;
-      const double c3    = Psi.d[2] * I.I3;
-      double       Ci[3][3]; // C^-1 as a plain array (cheap to index)
-      for (unsigned int A = 0; A < 3; ++A)
-        for (unsigned int B = 0; B < 3; ++B)
-          Ci[A][B] = C_inv[A][B];
-      double g[3][6], h[3][6]; // h_j,p = sum_i Psi_ij G_i,p
-      for (unsigned int p = 0; p < 6; ++p)
-        {
-          const unsigned int A = index[p][0], B = index[p][1];
-          for (unsigned int i = 0; i < 3; ++i)
-            g[i][p] = G[i][A][B];
-          for (unsigned int j = 0; j < 3; ++j)
-            h[j][p] = 0.;
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int j = 0; j < 3; ++j)
-              h[j][p] += Psi.dd[i][j] * g[i][p];
-        }
-      for (unsigned int p = 0; p < 6; ++p)
-        for (unsigned int q = p; q < 6; ++q)
-          {
-            const unsigned int A = index[p][0], B = index[p][1];
-            const unsigned int K = index[q][0], L = index[q][1];
-            D[p][q] = D[q][p] =
-              4. * (h[0][p] * g[0][q] + h[1][p] * g[1][q] + h[2][p] * g[2][q] +
-                    Psi.d[1] * I_minus_II[p][q] +
-                    c3 * (Ci[A][B] * Ci[K][L] -
-                          0.5 * (Ci[A][K] * Ci[B][L] + Ci[A][L] * Ci[B][K])));
-          }
+      if (CC != nullptr)
+        // (M3):
+        // sum_ij Psi_ij G_i x G_j
+        //   + Psi_2 (I x I - II)                          [d^2 I2 / dC dC]
+        //   + Psi_3 I3 (C^-1 x C^-1 - C^-1 (.) C^-1)      [d^2 I3 / dC dC]
+        voigt_closed_form(G, Psi, I.I3, nullptr, &C_inv, *CC);
     }
 
 
@@ -108,45 +135,13 @@ namespace TissueContact
           b2[i][j] = b[i][0] * b[0][j] + b[i][1] * b[1][j] + b[i][2] * b[2][j];
 
       // g_i = F G_i F^T (M3S)
-      const SymmetricTensor<2, 3> g_[3] = {b, I.I1 * b - b2, I.I3 * Id};
+      const SymmetricTensor<2, 3> g[3] = {b, I.I1 * b - b2, I.I3 * Id};
 
-      tau = 2. * (Psi.d[0] * g_[0] + Psi.d[1] * g_[1] + Psi.d[2] * g_[2]);
+      tau = 2. * (Psi.d[0] * g[0] + Psi.d[1] * g[1] + Psi.d[2] * g[2]);
 
-      if (c == nullptr)
-        return;
-
-      // (M3S): (M3V) with I, C, C^-1 replaced by b, b^2, I
-      const auto  &index = VoigtTangent::index;
-      auto        &D     = c->D;
-      const double c3    = Psi.d[2] * I.I3;
-      double       bb[3][3];
-      for (unsigned int A = 0; A < 3; ++A)
-        for (unsigned int B = 0; B < 3; ++B)
-          bb[A][B] = b[A][B];
-      double g[3][6], h[3][6]; // h_j,p = sum_i Psi_ij g_i,p
-      for (unsigned int p = 0; p < 6; ++p)
-        {
-          const unsigned int A = index[p][0], B = index[p][1];
-          for (unsigned int i = 0; i < 3; ++i)
-            g[i][p] = g_[i][A][B];
-          for (unsigned int j = 0; j < 3; ++j)
-            h[j][p] = 0.;
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int j = 0; j < 3; ++j)
-              h[j][p] += Psi.dd[i][j] * g[i][p];
-        }
-      for (unsigned int p = 0; p < 6; ++p)
-        for (unsigned int q = p; q < 6; ++q)
-          {
-            const unsigned int A = index[p][0], B = index[p][1];
-            const unsigned int K = index[q][0], L = index[q][1];
-            D[p][q] = D[q][p] =
-              4. *
-              (h[0][p] * g[0][q] + h[1][p] * g[1][q] + h[2][p] * g[2][q] +
-               Psi.d[1] * (bb[A][B] * bb[K][L] -
-                           0.5 * (bb[A][K] * bb[B][L] + bb[A][L] * bb[B][K])) +
-               c3 * I_minus_II[p][q]);
-          }
+      if (c != nullptr)
+        // (M3S): (M3) with I, C, C^-1 replaced by b, b^2, I
+        voigt_closed_form(g, Psi, I.I3, &b, nullptr, *c);
     }
   } // namespace Materials
 } // namespace TissueContact

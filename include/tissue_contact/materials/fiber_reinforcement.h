@@ -68,6 +68,15 @@ namespace TissueContact
       }
 
     private:
+      /** The fiber term with @p v = f (material) or a = F f (spatial) and
+       * the fiber stretch squared @p lf2: @p stress += 2 Psi_f' v (x) v,
+       * @p tangent += 4 Psi_f'' v (x) v (x) v (x) v. */
+      void
+      add_fiber(const Tensor<1, 3>    &v,
+                const double           lf2,
+                SymmetricTensor<2, 3> &stress,
+                VoigtTangent          *tangent) const;
+
       std::unique_ptr<HyperelasticMaterial> ground;
       const double                          alpha_f, beta_f;
       std::shared_ptr<const Function<3>>    direction;
