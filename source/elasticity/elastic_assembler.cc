@@ -680,7 +680,32 @@ namespace TissueContact
             const unsigned int *at =
               &positions[std::size_t(copy.cell) * n_local * n_local];
             const double *k = &copy.K(0, 0);
-            if (copy.upper)
+            if (copy.upper && !node_positions.empty())
+              {
+                // node by node (use_matrix_pattern()): a row's three
+                // columns of a node follow each other in the values
+                const unsigned int  per_row = n_nodes + 1;
+                const unsigned int *np =
+                  &node_positions[std::size_t(copy.cell) * n_local * per_row];
+                for (unsigned int a = 0; a < n_nodes; ++a)
+                  for (unsigned int i = 0; i < 3; ++i)
+                    {
+                      const unsigned int  row = 3 * a + i;
+                      const unsigned int *P   = np + row * per_row;
+                      const double       *kr  = k + row * n_local;
+                      for (unsigned int b = 0; b < a; ++b)
+                        for (unsigned int j = 0; j < 3; ++j)
+                          values[P[b] + j] += k[(3 * b + j) * n_local + row];
+                      values[P[n_nodes]] += kr[row];
+                      for (unsigned int j = 0, offset = 0; j < 3; ++j)
+                        if (j != i)
+                          values[P[a] + offset++] += kr[3 * a + j];
+                      for (unsigned int b = a + 1; b < n_nodes; ++b)
+                        for (unsigned int j = 0; j < 3; ++j)
+                          values[P[b] + j] += kr[3 * b + j];
+                    }
+              }
+            else if (copy.upper)
               for (unsigned int a = 0; a < n_nodes; ++a)
                 for (unsigned int i = 0; i < 3; ++i)
                   {
@@ -812,6 +837,50 @@ namespace TissueContact
         },
         256);
       AssertThrow(all_found, ExcInternalError());
+
+      // the node-wise positions, if every cell's rows allow them
+      const unsigned int per_row = n_nodes + 1;
+      node_positions.resize(std::size_t(n_cells) * n_local * per_row);
+      std::atomic<bool> node_wise{true};
+      parallel::apply_to_subranges(
+        0u,
+        static_cast<unsigned int>(deformable_cells.size()),
+        [&](const unsigned int begin, const unsigned int end) {
+          for (unsigned int k = begin; k < end && node_wise; ++k)
+            {
+              const unsigned int  c = deformable_cells[k];
+              const unsigned int *at =
+                &positions[std::size_t(c) * n_local * n_local];
+              const types::global_dof_index *dofs = &cell_dofs[c * n_local];
+              unsigned int                  *np =
+                &node_positions[std::size_t(c) * n_local * per_row];
+              for (unsigned int b = 0; b < n_nodes; ++b)
+                if (dofs[3 * b + 1] != dofs[3 * b] + 1 ||
+                    dofs[3 * b + 2] != dofs[3 * b] + 2)
+                  node_wise = false;
+              for (unsigned int r = 0; r < n_local; ++r)
+                {
+                  const unsigned int  a = r / 3, i = r % 3;
+                  const unsigned int *row = at + r * n_local;
+                  for (unsigned int b = 0; b < n_nodes; ++b)
+                    {
+                      // the node's columns in order, the diagonal left out
+                      unsigned int       offset = 0;
+                      const unsigned int base =
+                        row[3 * b + (b == a && i == 0 ? 1 : 0)];
+                      for (unsigned int j = 0; j < 3; ++j)
+                        if (b != a || j != i)
+                          node_wise =
+                            node_wise && row[3 * b + j] == base + offset++;
+                      np[r * per_row + b] = base;
+                    }
+                  np[r * per_row + n_nodes] = row[r];
+                }
+            }
+        },
+        256);
+      if (!node_wise)
+        node_positions.clear();
       positions_pattern = &pattern;
       positions_entries = pattern.n_nonzero_elements();
       positions_row_start.swap(row_start);

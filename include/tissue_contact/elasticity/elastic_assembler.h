@@ -238,6 +238,12 @@ namespace TissueContact
       // [n_rows + 1] and the columns, in the pattern's order
       std::vector<std::size_t>             positions_row_start;
       std::vector<types::global_dof_index> positions_columns;
+      // the same per row and node, where each node's three DoFs are
+      // consecutive and so are its columns in every row (empty otherwise):
+      // [c][i * (n_nodes + 1) + b] the position of column 3 b (of the first
+      // column after the diagonal for row i's own node), [.. + n_nodes] the
+      // diagonal's; a third of the positions to read per cell
+      std::vector<unsigned int> node_positions;
 
       // the volume term at the vertices: null if no body has it
       std::unique_ptr<NodalPressure> nodal;
