@@ -846,7 +846,10 @@ namespace TissueContact
         0u,
         static_cast<unsigned int>(deformable_cells.size()),
         [&](const unsigned int begin, const unsigned int end) {
-          for (unsigned int k = begin; k < end && node_wise; ++k)
+          // decided in a local flag: the shared one written per entry cost
+          // more than the whole rest (its cache line passed between threads)
+          bool ok = node_wise;
+          for (unsigned int k = begin; k < end && ok; ++k)
             {
               const unsigned int  c = deformable_cells[k];
               const unsigned int *at =
@@ -857,7 +860,7 @@ namespace TissueContact
               for (unsigned int b = 0; b < n_nodes; ++b)
                 if (dofs[3 * b + 1] != dofs[3 * b] + 1 ||
                     dofs[3 * b + 2] != dofs[3 * b] + 2)
-                  node_wise = false;
+                  ok = false;
               for (unsigned int r = 0; r < n_local; ++r)
                 {
                   const unsigned int  a = r / 3, i = r % 3;
@@ -870,13 +873,14 @@ namespace TissueContact
                         row[3 * b + (b == a && i == 0 ? 1 : 0)];
                       for (unsigned int j = 0; j < 3; ++j)
                         if (b != a || j != i)
-                          node_wise =
-                            node_wise && row[3 * b + j] == base + offset++;
+                          ok = ok && row[3 * b + j] == base + offset++;
                       np[r * per_row + b] = base;
                     }
                   np[r * per_row + n_nodes] = row[r];
                 }
             }
+          if (!ok)
+            node_wise = false;
         },
         256);
       if (!node_wise)
