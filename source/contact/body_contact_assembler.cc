@@ -351,6 +351,20 @@ namespace TissueContact
 
     template <typename F>
     void
+    BodyContactAssembler::visit(const unsigned int           c,
+                                const std::vector<Point<3>> &x,
+                                const F                     &f) const
+    {
+      const Candidate &candidate = candidates[c];
+      f(candidate.t,
+        candidate.k,
+        pairs[candidate.pair],
+        pair_geometry(x, candidate.t, candidate.k));
+    }
+
+
+    template <typename F>
+    void
     BodyContactAssembler::for_each_surviving_pair_of(
       const unsigned int           i,
       const std::vector<Point<3>> &x,
@@ -361,10 +375,7 @@ namespace TissueContact
       if (known)
         {
           for (const unsigned int c : found)
-            f(candidates[c].t,
-              candidates[c].k,
-              pairs[candidates[c].pair],
-              pair_geometry(x, candidates[c].t, candidates[c].k));
+            visit(c, x, f);
           return;
         }
       found.clear();
@@ -396,10 +407,7 @@ namespace TissueContact
       if (known && have_with_energy)
         {
           for (const unsigned int c : with_energy[i])
-            f(candidates[c].t,
-              candidates[c].k,
-              pairs[candidates[c].pair],
-              pair_geometry(x, candidates[c].t, candidates[c].k));
+            visit(c, x, f);
           return;
         }
       with_energy[i].clear();

@@ -264,6 +264,14 @@ namespace TissueContact
           32);
       }
 
+      /** Call @p f(t, k, pair, geometry) for candidates[c] at the
+       * positions @p x. */
+      template <typename F>
+      void
+      visit(const unsigned int           c,
+            const std::vector<Point<3>> &x,
+            const F                     &f) const;
+
       /** Call @p f(t, k, pair, geometry) for every candidate of
        * surface_triangles[i] in the list that rejected() does not reject at
        * the positions @p x, in the list's order: only the recorded
