@@ -284,6 +284,8 @@ namespace TissueContact
         std::array<Tensor<1, 3>, 4>          a;
         std::array<std::array<double, 3>, 4> L;
         std::array<double, 3>                G;
+        /** the depth field's gradient, @f$\eta = \sum_j g_j a_j@f$ */
+        Tensor<1, 3> eta;
 
         Barycentric(const Points &x, const std::array<double, 4> &g)
         {
@@ -295,6 +297,7 @@ namespace TissueContact
           a[2]                  = cross_product_3d(e3, e1) / V;
           a[3]                  = cross_product_3d(e1, e2) / V;
           a[0]                  = -(a[1] + a[2] + a[3]);
+          eta = g[0] * a[0] + g[1] * a[1] + g[2] * a[2] + g[3] * a[3];
           for (unsigned int t = 0; t < 3; ++t)
             {
               const Tensor<1, 3> r = x[4 + t] - x[0];
@@ -474,27 +477,53 @@ namespace TissueContact
         std::array<std::array<double, max_parameters>, max_parameters> H;
       };
 
-      /** Column c of the basis B_k of a vertex's parameters in zeta:
-       * @f$e_{t_b} - e_{t_a}@f$ for an edge cut, @f$e_c@f$ for a plane cut. */
-      inline Tensor<1, 3>
-      basis(const ZetaVertex &v, const unsigned int c)
+      /** @f$B_k^T y@f$: the projection of a zeta-space vector on the
+       * parameter basis B_k of a vertex, @f$e_{t_b} - e_{t_a}@f$ for an edge
+       * cut, the identity for a plane cut; into @p out[0..n_p). */
+      inline void
+      project(const ZetaVertex &v, const Tensor<1, 3> &y, double *out)
       {
-        Tensor<1, 3> b;
         if (v.kind == ZetaVertex::edge_cut)
-          {
-            b[v.tb] = 1.;
-            b[v.ta] = -1.;
-          }
+          out[0] = y[v.tb] - y[v.ta];
         else
-          b[c] = 1.;
-        return b;
+          for (unsigned int c = 0; c < 3; ++c)
+            out[c] = y[c];
       }
 
-      /** @f$B_k(:, c)\cdot y@f$ */
-      inline double
-      project(const ZetaVertex &v, const unsigned int c, const Tensor<1, 3> &y)
+      /** @f$B_r^T M B_s@f$ added to the parameters' Hessian at (p_r, p_s)
+       * and, for two vertices, its transpose at (p_s, p_r). */
+      inline void
+      add_block(
+        std::array<std::array<double, max_parameters>, max_parameters> &H,
+        const ZetaVertex                                               &vr,
+        const ZetaVertex                                               &vs,
+        const Tensor<2, 3>                                             &M,
+        const bool                                                      mirror)
       {
-        return v.kind == ZetaVertex::edge_cut ? y[v.tb] - y[v.ta] : y[c];
+        // rows: B_r^T M
+        double rows[3][3];
+        if (vr.kind == ZetaVertex::edge_cut)
+          for (unsigned int e = 0; e < 3; ++e)
+            rows[0][e] = M[vr.tb][e] - M[vr.ta][e];
+        else
+          for (unsigned int a = 0; a < 3; ++a)
+            for (unsigned int e = 0; e < 3; ++e)
+              rows[a][e] = M[a][e];
+        for (unsigned int a = 0; a < vr.n_p; ++a)
+          {
+            double cols[3];
+            if (vs.kind == ZetaVertex::edge_cut)
+              cols[0] = rows[a][vs.tb] - rows[a][vs.ta];
+            else
+              for (unsigned int c = 0; c < 3; ++c)
+                cols[c] = rows[a][c];
+            for (unsigned int c = 0; c < vs.n_p; ++c)
+              {
+                H[vr.p + a][vs.p + c] += cols[c];
+                if (mirror)
+                  H[vs.p + c][vr.p + a] += cols[c];
+              }
+          }
       }
 
       /**
@@ -503,8 +532,8 @@ namespace TissueContact
        * \zeta_k, \zeta_{k+1}]@f$, @f$Q_k = \tfrac12 h^TEh@f$ with
        * @f$h = (G\cdot\zeta_0, G\cdot\zeta_k, G\cdot\zeta_{k+1})@f$, and its
        * gradient and Hessian in the parameters: the derivatives in the rows
-       * @f$z_r@f$ of the fan triangle (sec. 5.1) projected on each row's
-       * parameter basis.
+       * @f$z_r@f$ of the fan triangle (sec. 5.1), 3 by 3 blocks in zeta,
+       * projected on each row's parameter basis.
        */
       void
       fan_integral(const std::array<ZetaVertex, 9> &form,
@@ -515,6 +544,7 @@ namespace TissueContact
       {
         const unsigned int iG = fan.n_p - 3;
         const Tensor<1, 3> G({bary.G[0], bary.G[1], bary.G[2]});
+        const Tensor<2, 3> GG = outer_product(G, G);
         if (with_hessian)
           for (unsigned int a = 0; a < fan.n_p; ++a)
             std::fill(fan.H[a].begin(), fan.H[a].begin() + fan.n_p, 0.);
@@ -538,14 +568,14 @@ namespace TissueContact
             fan.Phi += d * Q;
             // dQ/dG = Z^T E h
             const Tensor<1, 3> mG = Eh[0] * z[0] + Eh[1] * z[1] + Eh[2] * z[2];
-            // per row r and parameter a: b . d_r, b . G, b . dPhi/dz_r
-            std::array<std::array<double, 3>, 3> bd, bG;
+            // dPhi/dz_r = Q d_r + d Eh_r G
             for (unsigned int r = 0; r < 3; ++r)
-              for (unsigned int a = 0; a < v[r]->n_p; ++a)
+              if (v[r]->n_p > 0)
                 {
-                  bd[r][a] = project(*v[r], a, dd[r]);
-                  bG[r][a] = project(*v[r], a, G);
-                  fan.g[v[r]->p + a] += Q * bd[r][a] + d * Eh[r] * bG[r][a];
+                  double g[3];
+                  project(*v[r], Q * dd[r] + (d * Eh[r]) * G, g);
+                  for (unsigned int a = 0; a < v[r]->n_p; ++a)
+                    fan.g[v[r]->p + a] += g[a];
                 }
             for (unsigned int t = 0; t < 3; ++t)
               fan.g[iG + t] += d * mG[t];
@@ -554,48 +584,43 @@ namespace TissueContact
             // (E Z)_r = z_r + sum of the rows
             const Tensor<1, 3> zs = z[0] + z[1] + z[2];
             for (unsigned int r = 0; r < 3; ++r)
-              for (unsigned int a = 0; a < v[r]->n_p; ++a)
-                {
-                  auto &row = fan.H[v[r]->p + a];
-                  // rows (r, s): Eh_s (b.d_r)(G.b') + Eh_r (b.G)(d_s.b')
-                  // + d E_rs (b.G)(G.b') + Q b^T (d2 det / dz_r dz_s) b'
-                  for (unsigned int s = 0; s < 3; ++s)
-                    {
-                      if (v[s]->n_p == 0)
-                        continue;
-                      // d2 det / dz_r dz_s = -[z_t]_x (s = r + 1), its
-                      // transpose (s = r + 2): b^T(-[z_t]_x)b' = -b.(z_t x b')
-                      const unsigned int t =
-                        s == (r + 1) % 3 ? (r + 2) % 3 : (r + 1) % 3;
-                      const double sign = s == (r + 1) % 3 ? -1. :
-                                          s == r           ? 0. :
-                                                             1.;
-                      for (unsigned int c = 0; c < v[s]->n_p; ++c)
-                        {
-                          double hv =
-                            Eh[s] * bd[r][a] * bG[s][c] +
-                            Eh[r] * bG[r][a] * bd[s][c] +
-                            d * (r == s ? 2. : 1.) * bG[r][a] * bG[s][c];
-                          if (sign != 0.)
-                            hv +=
-                              sign * Q *
-                              project(*v[r],
-                                      a,
-                                      cross_product_3d(z[t], basis(*v[s], c)));
-                          row[v[s]->p + c] += hv;
-                        }
-                    }
-                  // (r, G): (b.d_r) mG + d (b.G)(z_r + zs) + d Eh_r b
-                  const Tensor<1, 3> b  = basis(*v[r], a);
-                  const Tensor<1, 3> rG = bd[r][a] * mG +
-                                          (d * bG[r][a]) * (z[r] + zs) +
-                                          (d * Eh[r]) * b;
-                  for (unsigned int e = 0; e < 3; ++e)
-                    {
-                      row[iG + e] += rG[e];
-                      fan.H[iG + e][v[r]->p + a] += rG[e];
-                    }
-                }
+              {
+                if (v[r]->n_p == 0)
+                  continue;
+                // rows (r, s): Eh_s d_r G^T + Eh_r G d_s^T + d E_rs G G^T
+                // + Q d2 det / dz_r dz_s, the last -[z_t]_x for s = r + 1
+                // and its transpose for s = r + 2
+                for (unsigned int s = r; s < 3; ++s)
+                  {
+                    if (v[s]->n_p == 0)
+                      continue;
+                    Tensor<2, 3> M = Eh[s] * outer_product(dd[r], G) +
+                                     Eh[r] * outer_product(G, dd[s]) +
+                                     (d * (r == s ? 2. : 1.)) * GG;
+                    if (s == (r + 1) % 3)
+                      M -= Q * cross_matrix(z[3 - r - s]);
+                    else if (s != r)
+                      M += Q * cross_matrix(z[3 - r - s]);
+                    add_block(fan.H, *v[r], *v[s], M, s != r);
+                  }
+                // (r, G): d_r mG^T + d G (z_r + zs)^T + d Eh_r I
+                Tensor<2, 3> C =
+                  outer_product(dd[r], mG) + d * outer_product(G, z[r] + zs);
+                for (unsigned int e = 0; e < 3; ++e)
+                  C[e][e] += d * Eh[r];
+                for (unsigned int e = 0; e < 3; ++e)
+                  {
+                    double col[3];
+                    project(*v[r],
+                            Tensor<1, 3>({C[0][e], C[1][e], C[2][e]}),
+                            col);
+                    for (unsigned int a = 0; a < v[r]->n_p; ++a)
+                      {
+                        fan.H[v[r]->p + a][iG + e] += col[a];
+                        fan.H[iG + e][v[r]->p + a] += col[a];
+                      }
+                  }
+              }
             // (G, G): d Z^T E Z = d (sum_r z_r z_r^T + zs zs^T)
             const Tensor<2, 3> MG =
               d * (outer_product(z[0], z[0]) + outer_product(z[1], z[1]) +
@@ -607,97 +632,178 @@ namespace TissueContact
       }
 
 
-      /** The Jacobian of the parameters in Lambda (index 3 j + t): at most
-       * six entries per parameter. */
-      struct ParameterJacobian
+      /** The derivatives of Phi in Lambda (index 3 j + t), split: the
+       * polygon vertices' part in full, G's part (@f$G_t = \sum_j
+       * g_j\Lambda_{jt}@f$) by its derivatives in G, which
+       * to_coordinates() chains through @f$\eta@f$. */
+      struct LambdaDerivatives
       {
-        struct Entry
-        {
-          unsigned int alpha;
-          double       c;
-        };
-        std::array<std::array<Entry, 6>, max_parameters> J;
-        std::array<unsigned int, max_parameters>         n{};
-
-        ParameterJacobian(const std::array<ZetaVertex, 9> &form,
-                          const unsigned int               m,
-                          const unsigned int               n_p,
-                          const std::array<double, 4>     &g)
-        {
-          for (unsigned int k = 0; k < m; ++k)
-            {
-              const ZetaVertex &v = form[k];
-              if (v.kind == ZetaVertex::edge_cut)
-                {
-                  J[v.p][0] = {3 * v.i + v.ta, v.s_A};
-                  J[v.p][1] = {3 * v.i + v.tb, v.s_B};
-                  n[v.p]    = 2;
-                }
-              else if (v.kind == ZetaVertex::plane_cut)
-                for (unsigned int c = 0; c < 3; ++c)
-                  {
-                    for (unsigned int t = 0; t < 3; ++t)
-                      {
-                        J[v.p + c][t]     = {3 * v.i + t, v.dzeta[t][c]};
-                        J[v.p + c][3 + t] = {3 * v.j + t, v.dzeta[3 + t][c]};
-                      }
-                    n[v.p + c] = 6;
-                  }
-            }
-          for (unsigned int t = 0; t < 3; ++t)
-            {
-              for (unsigned int j = 0; j < 4; ++j)
-                J[n_p - 3 + t][j] = {3 * j + t, g[j]};
-              n[n_p - 3 + t] = 4;
-            }
-        }
+        /** dPhi/dLambda through the vertices; dPhi/dG */
+        std::array<double, 12> d;
+        Tensor<1, 3>           dG;
+        /** the rows j of Lambda the vertices depend on (bit j) */
+        unsigned int faces = 0;
+        /** the vertices' Hessian in Lambda, rows and columns of @p faces */
+        std::array<std::array<double, 12>, 12> H;
+        /** the mixed second derivatives in (Lambda, G) through the
+         * vertices, @f$X_{\alpha u} = \partial^2\Phi/\partial\Lambda_\alpha
+         * \partial G_u@f$ (rows of @p faces), and those in G */
+        std::array<Tensor<1, 3>, 12> X;
+        Tensor<2, 3>                 HG;
       };
 
+      /** A polygon vertex's parameters as functions of the (at most six)
+       * entries of Lambda they depend on: @f$J_{al} = \partial
+       * p_a/\partial\Lambda_{\alpha_l}@f$. */
+      struct VertexJacobian
+      {
+        unsigned int                         p, n_p, n_l;
+        std::array<unsigned int, 6>          alpha;
+        std::array<std::array<double, 6>, 3> J;
+      };
+
+      /** (vertex b, G): @f$X \mathrel{+}= J_b^T H_{bG}@f$, with the
+       * vertex's numbers of parameters and Lambda entries fixed */
+      template <unsigned int NP, unsigned int NL>
+      inline void
+      add_vertex_G(const FanIntegral    &fan,
+                   const VertexJacobian &wb,
+                   const unsigned int    iG,
+                   LambdaDerivatives    &ld)
+      {
+        for (unsigned int l = 0; l < NL; ++l)
+          for (unsigned int u = 0; u < 3; ++u)
+            {
+              double x = 0.;
+              for (unsigned int a = 0; a < NP; ++a)
+                x += wb.J[a][l] * fan.H[wb.p + a][iG + u];
+              ld.X[wb.alpha[l]][u] += x;
+            }
+      }
+
+      /** (vertex b, vertex c): @f$J_b^T H_{bc} J_c@f$ and, for two
+       * vertices, its mirror */
+      template <unsigned int NPb,
+                unsigned int NLb,
+                unsigned int NPc,
+                unsigned int NLc>
+      inline void
+      add_vertex_pair(const FanIntegral    &fan,
+                      const VertexJacobian &wb,
+                      const VertexJacobian &wc,
+                      const bool            mirror,
+                      LambdaDerivatives    &ld)
+      {
+        double HJ[NPb][NLc];
+        for (unsigned int a = 0; a < NPb; ++a)
+          for (unsigned int l = 0; l < NLc; ++l)
+            {
+              double x = 0.;
+              for (unsigned int e = 0; e < NPc; ++e)
+                x += fan.H[wb.p + a][wc.p + e] * wc.J[e][l];
+              HJ[a][l] = x;
+            }
+        for (unsigned int k = 0; k < NLb; ++k)
+          for (unsigned int l = 0; l < NLc; ++l)
+            {
+              double y = 0.;
+              for (unsigned int a = 0; a < NPb; ++a)
+                y += wb.J[a][k] * HJ[a][l];
+              ld.H[wb.alpha[k]][wc.alpha[l]] += y;
+              if (mirror)
+                ld.H[wc.alpha[l]][wb.alpha[k]] += y;
+            }
+      }
 
       /**
        * Stage 3: the gradient and Hessian of Phi in Lambda by the chain rule
-       * through the parameters, with the second derivatives of s
-       * (edge cuts) and of zeta = kappa / sigma (plane cuts).
+       * through the vertices' parameters, block by block (each vertex
+       * depends on one or two rows of Lambda), with the second derivatives
+       * of s (edge cuts) and of zeta = kappa / sigma (plane cuts).
        */
       void
-      chain_to_lambda(const std::array<ZetaVertex, 9>        &form,
-                      const unsigned int                      m,
-                      const FanIntegral                      &fan,
-                      const ParameterJacobian                &pj,
-                      const bool                              with_hessian,
-                      std::array<double, 12>                 &dPhi,
-                      std::array<std::array<double, 12>, 12> &HPhi)
+      chain_to_lambda(const std::array<ZetaVertex, 9> &form,
+                      const unsigned int               m,
+                      const FanIntegral               &fan,
+                      const bool                       with_hessian,
+                      LambdaDerivatives               &ld)
       {
-        const unsigned int n_p = fan.n_p;
-        dPhi.fill(0.);
-        for (unsigned int p = 0; p < n_p; ++p)
-          for (unsigned int e = 0; e < pj.n[p]; ++e)
-            dPhi[pj.J[p][e].alpha] += fan.g[p] * pj.J[p][e].c;
-        if (!with_hessian)
-          return;
-        // HJ = H_p J, then J^T HJ
-        std::array<std::array<double, 12>, max_parameters> HJ;
-        for (unsigned int p = 0; p < n_p; ++p)
+        const unsigned int            iG = fan.n_p - 3;
+        std::array<VertexJacobian, 9> vj;
+        unsigned int                  n_v = 0;
+        ld.faces                          = 0;
+        for (unsigned int k = 0; k < m; ++k)
           {
-            HJ[p].fill(0.);
-            for (unsigned int q = 0; q < n_p; ++q)
+            const ZetaVertex &v = form[k];
+            if (v.kind == ZetaVertex::fixed)
+              continue;
+            VertexJacobian &w = vj[n_v++];
+            w.p               = v.p;
+            w.n_p             = v.n_p;
+            if (v.kind == ZetaVertex::edge_cut)
               {
-                const double h = fan.H[p][q];
-                if (h != 0.)
-                  for (unsigned int e = 0; e < pj.n[q]; ++e)
-                    HJ[p][pj.J[q][e].alpha] += h * pj.J[q][e].c;
+                w.n_l      = 2;
+                w.alpha[0] = 3 * v.i + v.ta;
+                w.alpha[1] = 3 * v.i + v.tb;
+                w.J[0][0]  = v.s_A;
+                w.J[0][1]  = v.s_B;
+                ld.faces |= 1u << v.i;
+              }
+            else
+              {
+                w.n_l = 6;
+                for (unsigned int t = 0; t < 3; ++t)
+                  {
+                    w.alpha[t]     = 3 * v.i + t;
+                    w.alpha[3 + t] = 3 * v.j + t;
+                    for (unsigned int c = 0; c < 3; ++c)
+                      {
+                        w.J[c][t]     = v.dzeta[t][c];
+                        w.J[c][3 + t] = v.dzeta[3 + t][c];
+                      }
+                  }
+                ld.faces |= (1u << v.i) | (1u << v.j);
               }
           }
-        for (auto &row : HPhi)
-          row.fill(0.);
-        for (unsigned int p = 0; p < n_p; ++p)
-          for (unsigned int e = 0; e < pj.n[p]; ++e)
-            {
-              const double c   = pj.J[p][e].c;
-              auto        &row = HPhi[pj.J[p][e].alpha];
-              for (unsigned int b = 0; b < 12; ++b)
-                row[b] += c * HJ[p][b];
-            }
+        ld.d.fill(0.);
+        for (unsigned int b = 0; b < n_v; ++b)
+          for (unsigned int a = 0; a < vj[b].n_p; ++a)
+            for (unsigned int l = 0; l < vj[b].n_l; ++l)
+              ld.d[vj[b].alpha[l]] += fan.g[vj[b].p + a] * vj[b].J[a][l];
+        for (unsigned int t = 0; t < 3; ++t)
+          ld.dG[t] = fan.g[iG + t];
+        if (!with_hessian)
+          return;
+        for (unsigned int j = 0; j < 4; ++j)
+          if (ld.faces & (1u << j))
+            for (unsigned int t = 0; t < 3; ++t)
+              {
+                ld.H[3 * j + t].fill(0.);
+                ld.X[3 * j + t] = Tensor<1, 3>();
+              }
+        for (unsigned int u = 0; u < 3; ++u)
+          for (unsigned int e = 0; e < 3; ++e)
+            ld.HG[u][e] = fan.H[iG + u][iG + e];
+        for (unsigned int b = 0; b < n_v; ++b)
+          {
+            const VertexJacobian &wb = vj[b];
+            if (wb.n_p == 1)
+              add_vertex_G<1, 2>(fan, wb, iG, ld);
+            else
+              add_vertex_G<3, 6>(fan, wb, iG, ld);
+            for (unsigned int cc = b; cc < n_v; ++cc)
+              {
+                const VertexJacobian &wc = vj[cc];
+                if (wb.n_p == 1 && wc.n_p == 1)
+                  add_vertex_pair<1, 2, 1, 2>(fan, wb, wc, cc != b, ld);
+                else if (wb.n_p == 1)
+                  add_vertex_pair<1, 2, 3, 6>(fan, wb, wc, true, ld);
+                else if (wc.n_p == 1)
+                  add_vertex_pair<3, 6, 1, 2>(fan, wb, wc, true, ld);
+                else
+                  add_vertex_pair<3, 6, 3, 6>(fan, wb, wc, cc != b, ld);
+              }
+          }
         // the parameters' second derivatives, weighted by dPhi/dparameter
         for (unsigned int k = 0; k < m; ++k)
           {
@@ -706,10 +812,10 @@ namespace TissueContact
               {
                 const double       gs = fan.g[v.p];
                 const unsigned int A = 3 * v.i + v.ta, B = 3 * v.i + v.tb;
-                HPhi[A][A] += gs * v.s_AA;
-                HPhi[A][B] += gs * v.s_AB;
-                HPhi[B][A] += gs * v.s_AB;
-                HPhi[B][B] += gs * v.s_BB;
+                ld.H[A][A] += gs * v.s_AA;
+                ld.H[A][B] += gs * v.s_AB;
+                ld.H[B][A] += gs * v.s_AB;
+                ld.H[B][B] += gs * v.s_BB;
               }
             else if (v.kind == ZetaVertex::plane_cut)
               {
@@ -725,34 +831,29 @@ namespace TissueContact
                 for (unsigned int a = 0; a < 6; ++a)
                   dphi[a] = gz[0] * v.dzeta[a][0] + gz[1] * v.dzeta[a][1] +
                             gz[2] * v.dzeta[a][2];
-                std::array<unsigned int, 6> idx;
-                for (unsigned int t = 0; t < 3; ++t)
-                  {
-                    idx[t]     = 3 * v.i + t;
-                    idx[3 + t] = 3 * v.j + t;
-                  }
+                const double inv = 1. / v.sigma;
+                // (u_t, w_s): beta . (e_t x e_s) = beta_r for (t, s, r)
+                // cyclic, -beta_r anticyclic
+                double cross[3][3] = {{0., beta[2], -beta[1]},
+                                      {-beta[2], 0., beta[0]},
+                                      {beta[1], -beta[0], 0.}};
                 for (unsigned int a = 0; a < 6; ++a)
-                  for (unsigned int b = 0; b < 6; ++b)
-                    {
-                      double h =
-                        -(dphi[a] * v.dsigma[b] + v.dsigma[a] * dphi[b]);
-                      if (a < 3 && b >= 3)
-                        {
-                          const unsigned int t = a, s = b - 3;
-                          // beta . (e_t x e_s)
-                          if (t != s)
-                            h +=
-                              ((s == (t + 1) % 3) ? 1. : -1.) * beta[3 - t - s];
-                        }
-                      else if (a >= 3 && b < 3)
-                        {
-                          const unsigned int t = b, s = a - 3;
-                          if (t != s)
-                            h +=
-                              ((s == (t + 1) % 3) ? 1. : -1.) * beta[3 - t - s];
-                        }
-                      HPhi[idx[a]][idx[b]] += h / v.sigma;
-                    }
+                  {
+                    const unsigned int ia =
+                      a < 3 ? 3 * v.i + a : 3 * v.j + a - 3;
+                    for (unsigned int b = 0; b < 6; ++b)
+                      {
+                        const unsigned int ib =
+                          b < 3 ? 3 * v.i + b : 3 * v.j + b - 3;
+                        double h =
+                          -(dphi[a] * v.dsigma[b] + v.dsigma[a] * dphi[b]);
+                        if (a < 3 && b >= 3)
+                          h += cross[a][b - 3];
+                        else if (a >= 3 && b < 3)
+                          h += cross[b][a - 3];
+                        ld.H[ia][ib] += h * inv;
+                      }
+                  }
               }
           }
       }
@@ -770,24 +871,28 @@ namespace TissueContact
        * @f$q_t@f$ at t_t and @f$-r_i@f$ at v_i, its Hessian has the blocks
        * @f$K_{tu}@f$, @f$-R_{iu} - q_u a_i^T@f$ (v_i, t_u) and
        * @f$\sum_u\Lambda_{iu}R_{ku} + r_i a_k^T + a_i r_k^T@f$ (v_k, v_i).
-       * Then @f$W = cN\Phi@f$.
+       * G's part enters through @f$\partial G_t/\partial\Lambda_{jt} =
+       * g_j@f$: @f$\Phi_{jt}@f$ gains @f$g_j\Phi_{G_t}@f$, so @f$q_t@f$
+       * gains @f$\Phi_{G_t}\eta@f$ and @f$K_{tu}@f$ gains
+       * @f$w_{tu}\eta^T + \eta w_{ut}^T + \Phi_{G_tG_u}\eta\eta^T@f$,
+       * @f$w_{tu} = \sum_j X_{jt,u}a_j@f$. Then @f$W = cN\Phi@f$.
        */
       void
-      to_coordinates(const Barycentric                            &bary,
-                     const TriangleArea                           &area,
-                     const double                                  Phi,
-                     const std::array<double, 12>                 &dPhi,
-                     const std::array<std::array<double, 12>, 12> &HPhi,
-                     const double                                  c,
-                     const bool                                    with_hessian,
-                     PairKernel                                   &result)
+      to_coordinates(const Barycentric       &bary,
+                     const TriangleArea      &area,
+                     const double             Phi,
+                     const LambdaDerivatives &ld,
+                     const double             c,
+                     const bool               with_hessian,
+                     PairKernel              &result)
       {
-        const auto                 &a = bary.a;
-        const auto                 &L = bary.L;
+        const auto                 &a     = bary.a;
+        const auto                 &L     = bary.L;
+        const Tensor<1, 3>         &eta = bary.eta;
         std::array<Tensor<1, 3>, 3> q;
         for (unsigned int t = 0; t < 3; ++t)
-          q[t] = dPhi[t] * a[0] + dPhi[3 + t] * a[1] + dPhi[6 + t] * a[2] +
-                 dPhi[9 + t] * a[3];
+          q[t] = ld.d[t] * a[0] + ld.d[3 + t] * a[1] + ld.d[6 + t] * a[2] +
+                 ld.d[9 + t] * a[3] + ld.dG[t] * eta;
         std::array<Tensor<1, 3>, 4> r;
         for (unsigned int i = 0; i < 4; ++i)
           r[i] = L[i][0] * q[0] + L[i][1] * q[1] + L[i][2] * q[2];
@@ -803,17 +908,38 @@ namespace TissueContact
         if (!with_hessian)
           return;
 
-        // K_tu = sum_j a_j (sum_k Phi_{jt,ku} a_k)^T
+        // the rows of Lambda the vertices depend on
+        std::array<unsigned int, 4> face;
+        unsigned int                n_f = 0;
+        for (unsigned int j = 0; j < 4; ++j)
+          if (ld.faces & (1u << j))
+            face[n_f++] = j;
+        // w_tu = sum_j X_{jt,u} a_j
+        std::array<std::array<Tensor<1, 3>, 3>, 3> w;
+        for (unsigned int t = 0; t < 3; ++t)
+          for (unsigned int u = 0; u < 3; ++u)
+            {
+              Tensor<1, 3> x;
+              for (unsigned int f = 0; f < n_f; ++f)
+                x += ld.X[3 * face[f] + t][u] * a[face[f]];
+              w[t][u] = x;
+            }
+        const Tensor<2, 3> gg = outer_product(eta, eta);
+        // K_tu = sum_jk Phi_{jt,ku} a_j a_k^T
         std::array<std::array<Tensor<2, 3>, 3>, 3> K;
         for (unsigned int t = 0; t < 3; ++t)
           for (unsigned int u = t; u < 3; ++u)
             {
-              Tensor<2, 3> Ktu;
-              for (unsigned int j = 0; j < 4; ++j)
+              Tensor<2, 3> Ktu = outer_product(w[t][u], eta) +
+                                 outer_product(eta, w[u][t]) +
+                                 ld.HG[t][u] * gg;
+              for (unsigned int f = 0; f < n_f; ++f)
                 {
-                  const auto        &row = HPhi[3 * j + t];
-                  const Tensor<1, 3> y   = row[u] * a[0] + row[3 + u] * a[1] +
-                                         row[6 + u] * a[2] + row[9 + u] * a[3];
+                  const unsigned int j   = face[f];
+                  const auto        &row = ld.H[3 * j + t];
+                  Tensor<1, 3>       y;
+                  for (unsigned int e = 0; e < n_f; ++e)
+                    y += row[3 * face[e] + u] * a[face[e]];
                   Ktu += outer_product(a[j], y);
                 }
               K[t][u] = Ktu;
@@ -894,11 +1020,9 @@ namespace TissueContact
         return false;
       result.energy = c * area.N * fan.Phi;
       area.derivatives(tri, with_hessian);
-      const ParameterJacobian                pj(form, m, fan.n_p, g);
-      std::array<double, 12>                 dPhi;
-      std::array<std::array<double, 12>, 12> HPhi;
-      chain_to_lambda(form, m, fan, pj, with_hessian, dPhi, HPhi);
-      to_coordinates(bary, area, fan.Phi, dPhi, HPhi, c, with_hessian, result);
+      LambdaDerivatives ld;
+      chain_to_lambda(form, m, fan, with_hessian, ld);
+      to_coordinates(bary, area, fan.Phi, ld, c, with_hessian, result);
       return true;
     }
 
