@@ -5,6 +5,21 @@
 
 // Symbols follow doc/theory/05-contact.md, sec. 5.1.
 
+// The kernel with the Hessian is compiled three times, for AVX-512, AVX2 and
+// the baseline x86-64, and the loader picks the one the CPU has (GCC's
+// function multiversioning); everything it calls, the clipping included, is
+// inlined into each copy. The file is compiled without floating-point
+// contraction (CMakeLists.txt), so the three give the same bits: the wider
+// registers only vectorize the fixed-length loops, which GCC does not
+// reassociate (measured: sec. 5.1 of the document).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && \
+  defined(__linux__)
+#  define TC_KERNEL_CLONES \
+    __attribute__((target_clones("avx512f", "avx2", "default"), flatten))
+#else
+#  define TC_KERNEL_CLONES
+#endif
+
 namespace TissueContact
 {
   namespace Contact
@@ -886,8 +901,8 @@ namespace TissueContact
                      const bool               with_hessian,
                      PairKernel              &result)
       {
-        const auto                 &a     = bary.a;
-        const auto                 &L     = bary.L;
+        const auto                 &a   = bary.a;
+        const auto                 &L   = bary.L;
         const Tensor<1, 3>         &eta = bary.eta;
         std::array<Tensor<1, 3>, 3> q;
         for (unsigned int t = 0; t < 3; ++t)
@@ -931,8 +946,7 @@ namespace TissueContact
           for (unsigned int u = t; u < 3; ++u)
             {
               Tensor<2, 3> Ktu = outer_product(w[t][u], eta) +
-                                 outer_product(eta, w[u][t]) +
-                                 ld.HG[t][u] * gg;
+                                 outer_product(eta, w[u][t]) + ld.HG[t][u] * gg;
               for (unsigned int f = 0; f < n_f; ++f)
                 {
                   const unsigned int j   = face[f];
@@ -994,7 +1008,7 @@ namespace TissueContact
     } // namespace
 
 
-    bool
+    TC_KERNEL_CLONES bool
     penalty_kernel(const std::array<Point<3>, 4> &tet,
                    const std::array<Point<3>, 3> &tri,
                    const std::array<double, 4>   &g,
