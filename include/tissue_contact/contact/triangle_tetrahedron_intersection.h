@@ -103,8 +103,11 @@ namespace TissueContact
       struct Face
       {
         Point<3>     f0;
-        Tensor<1, 3> normal;
-        double       normal_norm, edge_norms;
+        Tensor<1, 3> normal, e1, e2;
+        // |normal|_1 (|e1|_1 + |e2|_1): bounds the scale below from above
+        // without a square root; the Euclidean norms only near the plane
+        double normal_l1, edge_l1;
+        double normal_norm = -1., edge_norms = -1.;
       };
       std::array<Face, 4> faces;
       for (unsigned int i = 0; i < 4; ++i)
@@ -122,22 +125,34 @@ namespace TissueContact
                                                           &b[0],
                                                           &b[0] + 3);
                     });
-          const Tensor<1, 3> e1 = f[1] - f[0], e2 = f[2] - f[0];
-          faces[i].f0          = f[0];
-          faces[i].normal      = cross_product_3d(e1, e2);
-          faces[i].normal_norm = faces[i].normal.norm();
-          faces[i].edge_norms  = e1.norm() + e2.norm();
+          Face &face     = faces[i];
+          face.f0        = f[0];
+          face.e1        = f[1] - f[0];
+          face.e2        = f[2] - f[0];
+          face.normal    = cross_product_3d(face.e1, face.e2);
+          face.normal_l1 = std::abs(face.normal[0]) + std::abs(face.normal[1]) +
+                           std::abs(face.normal[2]);
+          face.edge_l1 = std::abs(face.e1[0]) + std::abs(face.e1[1]) +
+                         std::abs(face.e1[2]) + std::abs(face.e2[0]) +
+                         std::abs(face.e2[1]) + std::abs(face.e2[2]);
         }
       // values within rounding of zero are snapped to zero, so that a
       // polygon lying in the face plane gets one decision for all its
       // vertices instead of noise-driven alternating ones
       const auto side = [&](const unsigned int i, const Point<3> &p) {
-        const Face        &f = faces[i];
+        Face              &f = faces[i];
         const Tensor<1, 3> r = p - f.f0;
         const double       s = f.normal * r;
-        // |r| <= |r|_1: far from the plane (nearly always) the test needs
+        // |v| <= |v|_1: far from the plane (nearly always) the test needs
         // no square root, and decides as the exact one does
         const double r1 = std::abs(r[0]) + std::abs(r[1]) + std::abs(r[2]);
+        if (std::abs(s) > 1e-12 * f.normal_l1 * (f.edge_l1 + r1))
+          return s;
+        if (f.normal_norm < 0.)
+          {
+            f.normal_norm = f.normal.norm();
+            f.edge_norms  = f.e1.norm() + f.e2.norm();
+          }
         if (std::abs(s) > 1e-12 * f.normal_norm * (f.edge_norms + r1))
           return s;
         const double scale = f.normal_norm * (f.edge_norms + r.norm());
