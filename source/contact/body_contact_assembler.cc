@@ -32,7 +32,7 @@ namespace TissueContact
         methods.push_back(
           p.point_collocation ?
             Method{&collocation_energy<double>, &collocation_kernel} :
-            Method{&penalty_energy<double>, &penalty_kernel});
+            Method{&penalty_energy_value, &penalty_kernel});
       if (pairs.empty())
         return;
       // material depth, and a tree over the tetrahedra of the volume bodies

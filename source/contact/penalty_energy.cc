@@ -1,3 +1,4 @@
+#include <tissue_contact/base/multiversion.h>
 #include <tissue_contact/contact/penalty_energy.h>
 
 
@@ -5,6 +6,16 @@ namespace TissueContact
 {
   namespace Contact
   {
+    TC_MULTIVERSION double
+    penalty_energy_value(const std::array<Point<3>, 4> &tet,
+                         const std::array<Point<3>, 3> &tri,
+                         const std::array<double, 4>   &g,
+                         const double                   eps_p)
+    {
+      return penalty_energy<double>(tet, tri, g, eps_p);
+    }
+
+
     double
     intersection_area(const std::array<Point<3>, 4> &tet,
                       const std::array<Point<3>, 3> &tri)

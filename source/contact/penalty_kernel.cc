@@ -1,24 +1,14 @@
 #include <tissue_contact/base/cross_matrix.h>
+#include <tissue_contact/base/multiversion.h>
 #include <tissue_contact/contact/penalty_kernel.h>
 
 #include <algorithm>
 
 // Symbols follow doc/theory/05-contact.md, sec. 5.1.
 
-// The kernel with the Hessian is compiled three times, for AVX-512, AVX2 and
-// the baseline x86-64, and the loader picks the one the CPU has (GCC's
-// function multiversioning); everything it calls, the clipping included, is
-// inlined into each copy. The file is compiled without floating-point
-// contraction (CMakeLists.txt), so the three give the same bits: the wider
-// registers only vectorize the fixed-length loops, which GCC does not
-// reassociate (measured: sec. 5.1 of the document).
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && \
-  defined(__linux__)
-#  define TC_KERNEL_CLONES \
-    __attribute__((target_clones("avx512f", "avx2", "default"), flatten))
-#else
-#  define TC_KERNEL_CLONES
-#endif
+// The kernel with the Hessian is compiled for AVX-512, AVX2 and the baseline
+// x86-64, the same bits from each (base/multiversion.h; measured: sec. 5.1 of
+// the document).
 
 namespace TissueContact
 {
@@ -1008,7 +998,7 @@ namespace TissueContact
     } // namespace
 
 
-    TC_KERNEL_CLONES bool
+    TC_MULTIVERSION bool
     penalty_kernel(const std::array<Point<3>, 4> &tet,
                    const std::array<Point<3>, 3> &tri,
                    const std::array<double, 4>   &g,

@@ -116,7 +116,7 @@ main(int argc, char **argv)
       for (const auto &c : candidates)
         {
           const auto [tet, tri, g] = pair(c);
-          if (Contact::penalty_energy<double>(tet, tri, g, 1.) > 0.)
+          if (Contact::penalty_energy_value(tet, tri, g, 1.) > 0.)
             cutting.push_back(c);
         }
       const double        t_energy = timer.wall_time();

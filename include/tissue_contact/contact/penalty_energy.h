@@ -83,6 +83,15 @@ namespace TissueContact
              integral_of_square(x, G, polygon.n_vertices, unit_normal(tri));
     }
 
+    /** penalty_energy() in double precision, compiled also for AVX-512 and
+     * AVX2 (base/multiversion.h): the same bits, what the assembler's energy
+     * evaluations (line search, sparsity check) call. */
+    double
+    penalty_energy_value(const std::array<Point<3>, 4> &tet,
+                         const std::array<Point<3>, 3> &tri,
+                         const std::array<double, 4>   &g,
+                         const double                   eps_p);
+
     /** Area of the intersection of the triangle with the tetrahedron. */
     double
     intersection_area(const std::array<Point<3>, 4> &tet,
