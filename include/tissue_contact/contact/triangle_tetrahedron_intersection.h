@@ -117,14 +117,19 @@ namespace TissueContact
           for (unsigned int k = 0; k < 4; ++k)
             if (k != i)
               f[m++] = value_of(tet[k]);
-          std::sort(f.begin(),
-                    f.end(),
-                    [](const Point<3> &a, const Point<3> &b) {
-                      return std::lexicographical_compare(&a[0],
-                                                          &a[0] + 3,
-                                                          &b[0],
-                                                          &b[0] + 3);
-                    });
+          // lexicographic order by three compare-exchanges (the face's
+          // vertices are distinct; std::sort gives the same order)
+          const auto less = [](const Point<3> &a, const Point<3> &b) {
+            return a[0] < b[0] ||
+                   (a[0] == b[0] &&
+                    (a[1] < b[1] || (a[1] == b[1] && a[2] < b[2])));
+          };
+          if (less(f[1], f[0]))
+            std::swap(f[0], f[1]);
+          if (less(f[2], f[1]))
+            std::swap(f[1], f[2]);
+          if (less(f[1], f[0]))
+            std::swap(f[0], f[1]);
           Face &face     = faces[i];
           face.f0        = f[0];
           face.e1        = f[1] - f[0];
