@@ -495,6 +495,20 @@ namespace TissueContact
             out[c] = y[c];
       }
 
+      /** @f$B_k^T M@f$: the projection of each column of a zeta-space
+       * matrix, into @p out[0..n_p)[0..3). */
+      inline void
+      project_rows(const ZetaVertex &v, const Tensor<2, 3> &M, double out[3][3])
+      {
+        for (unsigned int e = 0; e < 3; ++e)
+          {
+            double column[3];
+            project(v, Tensor<1, 3>({M[0][e], M[1][e], M[2][e]}), column);
+            for (unsigned int a = 0; a < v.n_p; ++a)
+              out[a][e] = column[a];
+          }
+      }
+
       /** @f$B_r^T M B_s@f$ added to the parameters' Hessian at (p_r, p_s)
        * and, for two vertices, its transpose at (p_s, p_r). */
       inline void
@@ -505,23 +519,14 @@ namespace TissueContact
         const Tensor<2, 3>                                             &M,
         const bool                                                      mirror)
       {
-        // rows: B_r^T M
         double rows[3][3];
-        if (vr.kind == ZetaVertex::edge_cut)
-          for (unsigned int e = 0; e < 3; ++e)
-            rows[0][e] = M[vr.tb][e] - M[vr.ta][e];
-        else
-          for (unsigned int a = 0; a < 3; ++a)
-            for (unsigned int e = 0; e < 3; ++e)
-              rows[a][e] = M[a][e];
+        project_rows(vr, M, rows);
         for (unsigned int a = 0; a < vr.n_p; ++a)
           {
             double cols[3];
-            if (vs.kind == ZetaVertex::edge_cut)
-              cols[0] = rows[a][vs.tb] - rows[a][vs.ta];
-            else
-              for (unsigned int c = 0; c < 3; ++c)
-                cols[c] = rows[a][c];
+            project(vs,
+                    Tensor<1, 3>({rows[a][0], rows[a][1], rows[a][2]}),
+                    cols);
             for (unsigned int c = 0; c < vs.n_p; ++c)
               {
                 H[vr.p + a][vs.p + c] += cols[c];
@@ -613,18 +618,14 @@ namespace TissueContact
                   outer_product(dd[r], mG) + d * outer_product(G, z[r] + zs);
                 for (unsigned int e = 0; e < 3; ++e)
                   C[e][e] += d * Eh[r];
-                for (unsigned int e = 0; e < 3; ++e)
-                  {
-                    double col[3];
-                    project(*v[r],
-                            Tensor<1, 3>({C[0][e], C[1][e], C[2][e]}),
-                            col);
-                    for (unsigned int a = 0; a < v[r]->n_p; ++a)
-                      {
-                        fan.H[v[r]->p + a][iG + e] += col[a];
-                        fan.H[iG + e][v[r]->p + a] += col[a];
-                      }
-                  }
+                double BC[3][3];
+                project_rows(*v[r], C, BC);
+                for (unsigned int a = 0; a < v[r]->n_p; ++a)
+                  for (unsigned int e = 0; e < 3; ++e)
+                    {
+                      fan.H[v[r]->p + a][iG + e] += BC[a][e];
+                      fan.H[iG + e][v[r]->p + a] += BC[a][e];
+                    }
               }
             // (G, G): d Z^T E Z = d (sum_r z_r z_r^T + zs zs^T)
             const Tensor<2, 3> MG =
