@@ -20,8 +20,13 @@ namespace TissueContact
       // the copy first (the smoother and the hierarchy keep references),
       // without the entries that are stored but zero (doc/theory/
       // 04-solver.md sec. 4.5.2)
-      copy_nonzeros(A, pattern, matrix);
-      ml_matrix.reinit(matrix);
+      {
+        SparsityPattern      pattern;
+        SparseMatrix<double> matrix;
+        copy_nonzeros(A, pattern, matrix);
+        ml_matrix.reinit(matrix);
+      }
+      finest.copy_from(A);
 
       // the project's ML settings, with nothing done on the finest level
       // (ML skips that level's residual too: its initial guess is zero)
@@ -62,15 +67,15 @@ namespace TissueContact
         Smoother::AdditionalData::EigenvalueAlgorithm::power_iteration;
       data.preconditioner = std::make_shared<DiagonalMatrix<Vector<double>>>();
       Vector<double> &inverse_diagonal = data.preconditioner->get_vector();
-      inverse_diagonal.reinit(matrix.m());
-      for (types::global_dof_index i = 0; i < matrix.m(); ++i)
+      inverse_diagonal.reinit(finest.m());
+      for (types::global_dof_index i = 0; i < finest.m(); ++i)
         {
-          const double a      = std::abs(matrix.diag_element(i));
+          const double a      = std::abs(finest.diag_element(i));
           inverse_diagonal[i] = (a > 0. && std::isfinite(a)) ? 1. / a : 1.;
         }
-      smoother.initialize(matrix, data);
-      residual.reinit(matrix.m());
-      correction.reinit(matrix.m());
+      smoother.initialize(finest, data);
+      residual.reinit(finest.m());
+      correction.reinit(finest.m());
     }
 
 
@@ -80,7 +85,7 @@ namespace TissueContact
       // x_1 = S b
       smoother.vmult(x, b);
       // x_2 = x_1 + C (b - A x_1)
-      matrix.residual(residual, x, b);
+      finest.residual(residual, x, b);
       coarse_levels.vmult(correction, residual);
       x += correction;
       // x = x_2 + S (b - A x_2)

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <tissue_contact/base/nonzero_matrix.h>
+
 #include <deal.II/lac/diagonal_matrix.h>
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/sparse_matrix.h>
@@ -25,8 +27,9 @@ namespace TissueContact
      * @f$A@f$ without its stored zeros (most of a contact tangent's
      * entries), but is told to do nothing on the finest level; there
      * deal.II's Chebyshev smoother @f$S@f$ (degree 2, Jacobi-scaled, as
-     * ML's own) and the residual run on deal.II's sparse matrix, whose
-     * products use the threads. With @f$C@f$ the coarse correction ML applies
+     * ML's own) and the residual run on the project's copy of the nonzeros
+     * (NonzeroMatrix), whose products use the threads. With @f$C@f$ the coarse
+     * correction ML applies
      * (@f$C r = P\,M_c^{-1} R\,r@f$, the cycle below the finest level):
      * @f[
      *   x_1 = S\,b, \qquad x_2 = x_1 + C\,(b - A x_1), \qquad
@@ -64,16 +67,18 @@ namespace TissueContact
       types::global_dof_index
       m() const
       {
-        return matrix.m();
+        return finest.m();
       }
 
     private:
-      SparsityPattern      pattern;
-      SparseMatrix<double> matrix;
+      /** The finest level's operator: the nonzeros of A in groups of three
+       * rows, whose products are those of A to the last bit at half the
+       * time (base/nonzero_matrix.h). */
+      NonzeroMatrix finest;
       /** ML's copy of the matrix (its hierarchy keeps a reference). */
       TrilinosWrappers::SparseMatrix    ml_matrix;
       TrilinosWrappers::PreconditionAMG coarse_levels;
-      using Smoother = PreconditionChebyshev<SparseMatrix<double>,
+      using Smoother = PreconditionChebyshev<NonzeroMatrix,
                                              Vector<double>,
                                              DiagonalMatrix<Vector<double>>>;
       Smoother               smoother;
