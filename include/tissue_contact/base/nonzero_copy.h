@@ -18,11 +18,10 @@ namespace TissueContact
    * 4.5.2). @p copy is cleared first, so @p pattern may be its old one.
    * Cost, on a tangent of the full knee (29 706 rows, 2.24 million stored
    * entries, one thread): 25 ms, against 1.07 ms for a product with @p A
-   * and 0.32 ms with the copy: worth it for the AMG hierarchy's copy,
-   * made once per hierarchy and multiplied with four times per cycle, not
-   * for GMRES's products with each tangent (about 30 per solve there),
-   * which use a NonzeroMatrix: it needs no SparsityPattern and is taken
-   * in 2 ms (base/nonzero_matrix.h).
+   * and 0.32 ms with the copy. It is the matrix ML's hierarchy is built
+   * from (Trilinos' copy is made of it), once per hierarchy; the products
+   * of GMRES and of the cycle's finest level use a NonzeroMatrix, which
+   * needs no SparsityPattern and is taken in 2 ms (base/nonzero_matrix.h).
    */
   void
   copy_nonzeros(const SparseMatrix<double> &A,
