@@ -36,6 +36,7 @@ namespace TissueContact
     const types::global_dof_index n       = A.m();
     const types::global_dof_index groups  = (n + 2) / 3;
     const SparsityPattern        &pattern = A.get_sparsity_pattern();
+    Assert(pattern.is_compressed(), ExcNotInitialized());
     // a square SparseMatrix stores each row's values one after the other,
     // its diagonal first: the row's values are read from the diagonal's
     // address on, which is 2.7 times faster than through the matrix's
@@ -44,31 +45,76 @@ namespace TissueContact
     const auto row_values = [&](const types::global_dof_index i) {
       return &A(i, i);
     };
-    // the union of a group's off-diagonal nonzero columns, ascending: the
-    // three rows' sorted lists merged, f(column, row, value) for each entry
-    // (f(column, 3, 0) once per column before its entries)
-    const auto merge = [&](const types::global_dof_index g, const auto &f) {
-      const unsigned int rows = std::min<types::global_dof_index>(3, n - 3 * g);
-      std::array<const double *, 3>            v{};
-      std::array<SparsityPattern::iterator, 3> entry{
-        {pattern.end(0), pattern.end(0), pattern.end(0)}};
-      std::array<unsigned int, 3> j{}, length{};
+    const auto column_of = [&](const types::global_dof_index i,
+                               const unsigned int            k) {
+      return pattern.column_number(i, k);
+    };
+    // the layout of a vertex's three rows as deal.II's patterns of
+    // vector-valued elements and the contact couplings (whole 3 x 3 blocks)
+    // store them: the same columns, each row's own diagonal first. Row 0's
+    // other columns are then those of rows 1 and 2 but at the two positions
+    // p + 1, p + 2 after the p columns below i = 3 g, where row 0 has
+    // i + 1, i + 2, row 1 i, i + 2 and row 2 i, i + 1. Returns p, or
+    // invalid if the rows are laid out otherwise
+    constexpr unsigned int other = numbers::invalid_unsigned_int;
+    const auto             block_layout =
+      [&](const types::global_dof_index g) -> unsigned int {
+      const types::global_dof_index i = 3 * g;
+      if (i + 2 >= n)
+        return other;
+      const unsigned int length = pattern.row_length(i);
+      if (pattern.row_length(i + 1) != length ||
+          pattern.row_length(i + 2) != length)
+        return other;
+      unsigned int p = 0;
+      while (1 + p < length && column_of(i, 1 + p) < i)
+        ++p;
+      if (!(p + 2 < length && column_of(i, 1 + p) == i + 1 &&
+            column_of(i, 2 + p) == i + 2 && column_of(i + 1, 1 + p) == i &&
+            column_of(i + 1, 2 + p) == i + 2 && column_of(i + 2, 1 + p) == i &&
+            column_of(i + 2, 2 + p) == i + 1))
+        return other;
+      for (unsigned int k = 1; k < length; ++k)
+        if (k != 1 + p && k != 2 + p &&
+            (column_of(i + 1, k) != column_of(i, k) ||
+             column_of(i + 2, k) != column_of(i, k)))
+          return other;
+      return p;
+    };
+    // f(j, a) for the columns j of the rows of group g laid out as
+    // above (p), ascending, with a[c] row 3 g + c's entry there (zero at
+    // its own diagonal), whether zero or not
+    const auto for_each_block_column = [&](const types::global_dof_index g,
+                                           const unsigned int            p,
+                                           const auto                   &f) {
+      const types::global_dof_index i      = 3 * g;
+      const unsigned int            length = pattern.row_length(i);
+      const double                 *v0 = row_values(i), *v1 = row_values(i + 1),
+                   *v2 = row_values(i + 2);
+      for (unsigned int k = 1; k <= p; ++k)
+        f(column_of(i, k), v0[k], v1[k], v2[k]);
+      f(i, 0., v1[1 + p], v2[1 + p]);
+      f(i + 1, v0[1 + p], 0., v2[2 + p]);
+      f(i + 2, v0[2 + p], v1[2 + p], 0.);
+      for (unsigned int k = 3 + p; k < length; ++k)
+        f(column_of(i, k), v0[k], v1[k], v2[k]);
+    };
+    // the same for rows laid out otherwise, only the nonzero columns: their
+    // lists merged
+    const auto for_each_merged_column = [&](const types::global_dof_index g,
+                                            const auto                   &f) {
+      const types::global_dof_index i = 3 * g;
+      const unsigned int rows = std::min<types::global_dof_index>(3, n - i);
+      std::array<const double *, 3> v{};
+      std::array<unsigned int, 3>   length{}, k{{1, 1, 1}};
       for (unsigned int c = 0; c < rows; ++c)
         {
-          const types::global_dof_index i = 3 * g + c;
-          v[c]                            = row_values(i);
-          length[c]                       = pattern.row_length(i);
-          entry[c]                        = pattern.begin(i);
-          ++entry[c];
-          j[c] = 1;
+          v[c]      = row_values(i + c);
+          length[c] = pattern.row_length(i + c);
         }
-      // the next nonzero of row c (or the end)
       const auto skip_zeros = [&](const unsigned int c) {
-        while (j[c] < length[c] && v[c][j[c]] == 0.)
-          {
-            ++j[c];
-            ++entry[c];
-          }
+        while (k[c] < length[c] && v[c][k[c]] == 0.)
+          ++k[c];
       };
       for (unsigned int c = 0; c < rows; ++c)
         skip_zeros(c);
@@ -76,34 +122,73 @@ namespace TissueContact
         {
           types::global_dof_index next = numbers::invalid_dof_index;
           for (unsigned int c = 0; c < rows; ++c)
-            if (j[c] < length[c])
-              next = std::min(next, entry[c]->column());
+            if (k[c] < length[c])
+              next = std::min(next, column_of(i + c, k[c]));
           if (next == numbers::invalid_dof_index)
             return;
-          f(next, 3u, 0.);
+          std::array<double, 3> a{{0., 0., 0.}};
           for (unsigned int c = 0; c < rows; ++c)
-            if (j[c] < length[c] && entry[c]->column() == next)
+            if (k[c] < length[c] && column_of(i + c, k[c]) == next)
               {
-                f(next, c, v[c][j[c]]);
-                ++j[c];
-                ++entry[c];
+                a[c] = v[c][k[c]];
+                ++k[c];
                 skip_zeros(c);
               }
+          f(next, a[0], a[1], a[2]);
         }
     };
-    // pass 1: each group's column count, in group_start[g + 1]; then their
-    // sums
+    // pass 1: each group's layout, and the count of its columns with a
+    // nonzero (in group_start[g + 1]; then their sums) and of its nonzeros.
+    // Counted without branches on the values: which entries are zero
+    // follows no pattern a branch predictor could learn
+    std::vector<unsigned int> layout(groups);
+    std::vector<std::size_t>  entries(groups, 0);
     group_start.assign(groups + 1, 0);
-    std::vector<std::size_t> entries(groups, 0);
     for_each_row(groups, [&](const types::global_dof_index g) {
-      std::size_t columns = 0;
-      merge(g, [&](types::global_dof_index, const unsigned int c, double) {
-        if (c == 3)
-          ++columns;
-        else
-          ++entries[g];
-      });
+      layout[g]            = block_layout(g);
+      std::size_t columns  = 0;
+      std::size_t nonzeros = 0;
+      if (layout[g] != other)
+        {
+          // the k-th entries of the three rows share a column but at the
+          // two positions of the diagonal block, counted below
+          const types::global_dof_index i      = 3 * g;
+          const unsigned int            p      = layout[g];
+          const unsigned int            length = pattern.row_length(i);
+          const double *v0 = row_values(i), *v1 = row_values(i + 1),
+                       *v2 = row_values(i + 2);
+          for (unsigned int k = 1; k < length; ++k)
+            {
+              const unsigned int a = (v0[k] != 0.), b = (v1[k] != 0.),
+                                 c = (v2[k] != 0.);
+              nonzeros += a + b + c;
+              columns += a | b | c;
+            }
+          const auto nonzero = [](const double x, const double y) {
+            return static_cast<std::size_t>(x != 0. || y != 0.);
+          };
+          columns =
+            columns -
+            static_cast<std::size_t>(v0[1 + p] != 0. || v1[1 + p] != 0. ||
+                                     v2[1 + p] != 0.) -
+            static_cast<std::size_t>(v0[2 + p] != 0. || v1[2 + p] != 0. ||
+                                     v2[2 + p] != 0.) +
+            nonzero(v1[1 + p], v2[1 + p]) + nonzero(v0[1 + p], v2[2 + p]) +
+            nonzero(v0[2 + p], v1[2 + p]);
+        }
+      else
+        for_each_merged_column(g,
+                               [&](types::global_dof_index,
+                                   const double a0,
+                                   const double a1,
+                                   const double a2) {
+                                 const std::size_t z =
+                                   (a0 != 0.) + (a1 != 0.) + (a2 != 0.);
+                                 columns += (z != 0);
+                                 nonzeros += z;
+                               });
       group_start[g + 1] = columns;
+      entries[g]         = nonzeros;
     });
     n_nonzeros = n;
     for (types::global_dof_index g = 0; g < groups; ++g)
@@ -111,24 +196,34 @@ namespace TissueContact
         group_start[g + 1] += group_start[g];
         n_nonzeros += entries[g];
       }
-    // pass 2: the columns and values; a row's own diagonal among the
-    // columns stays zero (its term comes first, from diagonal[])
+    // pass 2: the columns and values, each written and kept (the position
+    // advanced) only if it has a nonzero, again without a branch on the
+    // values; a row's own diagonal among the columns stays zero (its term
+    // comes first, from diagonal[])
     column.resize(group_start[groups]);
-    value.assign(3 * group_start[groups], 0.);
+    value.resize(3 * group_start[groups]);
     diagonal.resize(n);
     for_each_row(groups, [&](const types::global_dof_index g) {
       for (unsigned int c = 0; c < 3 && 3 * g + c < n; ++c)
         diagonal[3 * g + c] = *row_values(3 * g + c);
-      std::size_t k = group_start[g];
-      merge(g,
-            [&](const types::global_dof_index j,
-                const unsigned int            c,
-                const double                  a) {
-              if (c == 3)
-                column[k++] = j;
-              else
-                value[3 * (k - 1) + c] = a;
-            });
+      std::size_t       k     = group_start[g];
+      const std::size_t end   = group_start[g + 1];
+      const auto        write = [&](const types::global_dof_index j,
+                             const double                  a0,
+                             const double                  a1,
+                             const double                  a2) {
+        if (k == end)
+          return; // the columns left have no nonzero
+        column[k]        = j;
+        value[3 * k]     = a0;
+        value[3 * k + 1] = a1;
+        value[3 * k + 2] = a2;
+        k += (a0 != 0. || a1 != 0. || a2 != 0.);
+      };
+      if (layout[g] != other)
+        for_each_block_column(g, layout[g], write);
+      else
+        for_each_merged_column(g, write);
     });
   }
 

@@ -742,6 +742,63 @@ namespace
           same = same && N.el(i, entry->column()) == entry->value();
       return std::make_pair(N.n_nonzero_elements(), same);
     };
+    // a vector-valued matrix as the tangents store them: each vertex's
+    // three rows with the same columns (whole 3 x 3 blocks) on a 40 x 40
+    // grid of vertices, its rows and columns of every 7th DoF zeroed but
+    // for the diagonal, and the blocks of every 5th vertex pair zeroed (a
+    // contact candidate not in contact)
+    const auto check_blocks = [&N]() {
+      const unsigned int     m = 40, n = 3 * m * m;
+      DynamicSparsityPattern dsp(n, n);
+      const auto             for_each_block = [&](const auto &f) {
+        for (unsigned int a = 0; a < m * m; ++a)
+          for (const int d :
+               {-int(m) - 1, -int(m), -1, 0, 1, int(m), int(m) + 1})
+            if (int(a) + d >= 0 && int(a) + d < int(m * m))
+              f(a, a + d);
+      };
+      for_each_block([&](const unsigned int a, const unsigned int b) {
+        for (unsigned int c = 0; c < 3; ++c)
+          for (unsigned int e = 0; e < 3; ++e)
+            dsp.add(3 * a + c, 3 * b + e);
+      });
+      SparsityPattern pattern;
+      pattern.copy_from(dsp);
+      SparseMatrix<double> A(pattern);
+      std::size_t          nonzeros = 0;
+      for_each_block([&](const unsigned int a, const unsigned int b) {
+        for (unsigned int c = 0; c < 3; ++c)
+          for (unsigned int e = 0; e < 3; ++e)
+            {
+              const unsigned int i = 3 * a + c, j = 3 * b + e;
+              double v = std::sin(0.3 * i + 0.7 * j) + (i == j ? 9. : 0.);
+              if (i != j && (i % 7 == 0 || j % 7 == 0 || (a + b) % 5 == 0))
+                v = 0.;
+              A.set(i, j, v);
+              nonzeros += (v != 0. || i == j);
+            }
+      });
+      Vector<double> x(n), b(n), y(n), z(n);
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          x[k] = std::sin(0.37 * k) + 1e-3 * k;
+          b[k] = std::cos(0.11 * k);
+        }
+      N.copy_from(A);
+      bool same = N.n_nonzero_elements() == nonzeros;
+      A.vmult(y, x);
+      N.vmult(z, x);
+      for (unsigned int k = 0; k < n; ++k)
+        same = same && y[k] == z[k];
+      A.residual(y, x, b);
+      N.residual(z, x, b);
+      for (unsigned int k = 0; k < n; ++k)
+        same = same && y[k] == z[k];
+      for (unsigned int i = 0; i < n; i += 13)
+        for (auto entry = A.begin(i); entry != A.end(i); ++entry)
+          same = same && N.el(i, entry->column()) == entry->value();
+      return std::make_pair(N.n_nonzero_elements(), same);
+    };
     const auto [kept_7, same_7]   = check(60, 7);
     const auto [kept_5, same_5]   = check(60, 5);
     const auto [kept_61, same_61] = check(61, 7);
@@ -751,6 +808,10 @@ namespace
             << ", again with other zeros: " << same_5 << " (" << kept_5
             << " kept), with a last group of one row: " << same_61 << " ("
             << kept_61 << " kept)" << std::endl;
+    const auto [kept_blocks, same_blocks] = check_blocks();
+    deallog << "nonzero operator of 3 x 3 blocks: " << kept_blocks
+            << " entries kept, products, residuals and entries bit for bit: "
+            << same_blocks << std::endl;
   }
 
   void
