@@ -5,6 +5,7 @@
 
 #include <deal.II/base/parallel.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -25,11 +26,17 @@ namespace TissueContact
        * its row, 3 % of the full knee's two-thread profile.
        */
       void
-      constrain_prescribed(SparseMatrix<double>    &K,
-                           const std::vector<bool> &prescribed,
-                           Vector<double>          &rhs,
-                           Vector<double>          &du)
+      constrain_prescribed(SparseMatrix<double>             &K,
+                           const std::vector<unsigned char> &prescribed,
+                           Vector<double>                   &rhs,
+                           Vector<double>                   &du)
       {
+        // a square SparseMatrix stores a row's values one after the other,
+        // the diagonal first: a prescribed row's others are zeroed in one
+        // sweep, a free row's where the column is prescribed (through its
+        // iterators and with the flags as bits, this took 2.3 % of the
+        // first 8 increments of the full knee)
+        const SparsityPattern &pattern = K.get_sparsity_pattern();
         parallel::apply_to_subranges(
           types::global_dof_index(0),
           K.m(),
@@ -37,16 +44,18 @@ namespace TissueContact
               const types::global_dof_index end) {
             for (types::global_dof_index i = begin; i < end; ++i)
               {
-                const bool row = prescribed[i];
-                for (auto entry = K.begin(i); entry != K.end(i); ++entry)
-                  if (entry->column() != i &&
-                      (row || prescribed[entry->column()]))
-                    entry->value() = 0.;
-                if (row)
+                double            *v      = &K.diag_element(i);
+                const unsigned int length = pattern.row_length(i);
+                if (prescribed[i])
                   {
-                    rhs[i] = 0. * K.diag_element(i);
+                    std::fill(v + 1, v + length, 0.);
+                    rhs[i] = 0. * v[0];
                     du[i]  = 0.;
                   }
+                else
+                  for (unsigned int k = 1; k < length; ++k)
+                    if (prescribed[pattern.column_number(i, k)])
+                      v[k] = 0.;
               }
           },
           1000);
@@ -194,10 +203,10 @@ namespace TissueContact
         viscosity =
           problem.quasi_viscosity_diagonal(parameters.viscosity_factor);
 
-      const auto        targets = problem.prescribed_values(load_factor);
-      std::vector<bool> prescribed(n, false);
+      const auto targets = problem.prescribed_values(load_factor);
+      std::vector<unsigned char> prescribed(n, 0);
       for (const auto &t : targets)
-        prescribed[t.first] = true;
+        prescribed[t.first] = 1;
 
       const auto norms = [&](const Vector<double> &R) {
         double free = 0., reaction = 0.;
