@@ -245,29 +245,43 @@ namespace TissueContact
   }
 
 
+  template <bool residual>
   void
-  NonzeroMatrix::vmult(Vector<double> &y, const Vector<double> &x) const
+  NonzeroMatrix::products(Vector<double>       &y,
+                          const Vector<double> &x,
+                          const Vector<double> *b) const
   {
-    AssertDimension(x.size(), m());
-    AssertDimension(y.size(), m());
     const types::global_dof_index n = m();
+    // row i's sum begun as SparseMatrix::vmult() and residual() begin it:
+    // 0 + a_ii x_i, or b_i - a_ii x_i; then a term added or subtracted
+    const auto first = [&](const types::global_dof_index i) {
+      double s = residual ? (*b)[i] : 0.;
+      if (residual)
+        s -= diagonal[i] * x[i];
+      else
+        s += diagonal[i] * x[i];
+      return s;
+    };
+    const auto add = [](double &s, const double a, const double xk) {
+      if (residual)
+        s -= a * xk;
+      else
+        s += a * xk;
+    };
     for_each_row(group_start.size() - 1, [&](const types::global_dof_index g) {
       const types::global_dof_index i = 3 * g;
       // a missing row (the last group of a matrix of 3 k + 1 or 2 rows)
       // reads row i's diagonal and x and is not written
       const types::global_dof_index i1 = std::min(i + 1, n - 1),
                                     i2 = std::min(i + 2, n - 1);
-      double s0 = 0., s1 = 0., s2 = 0.;
-      s0 += diagonal[i] * x[i];
-      s1 += diagonal[i1] * x[i1];
-      s2 += diagonal[i2] * x[i2];
+      double        s0 = first(i), s1 = first(i1), s2 = first(i2);
       const double *v = value.data() + 3 * group_start[g];
       for (std::size_t k = group_start[g]; k < group_start[g + 1]; ++k, v += 3)
         {
           const double xk = x[column[k]];
-          s0 += v[0] * xk;
-          s1 += v[1] * xk;
-          s2 += v[2] * xk;
+          add(s0, v[0], xk);
+          add(s1, v[1], xk);
+          add(s2, v[2], xk);
         }
       y[i] = s0;
       if (i + 1 < n)
@@ -279,6 +293,15 @@ namespace TissueContact
 
 
   void
+  NonzeroMatrix::vmult(Vector<double> &y, const Vector<double> &x) const
+  {
+    AssertDimension(x.size(), m());
+    AssertDimension(y.size(), m());
+    products<false>(y, x, nullptr);
+  }
+
+
+  void
   NonzeroMatrix::residual(Vector<double>       &r,
                           const Vector<double> &x,
                           const Vector<double> &b) const
@@ -286,28 +309,6 @@ namespace TissueContact
     AssertDimension(x.size(), m());
     AssertDimension(b.size(), m());
     AssertDimension(r.size(), m());
-    const types::global_dof_index n = m();
-    for_each_row(group_start.size() - 1, [&](const types::global_dof_index g) {
-      const types::global_dof_index i  = 3 * g;
-      const types::global_dof_index i1 = std::min(i + 1, n - 1),
-                                    i2 = std::min(i + 2, n - 1);
-      double s0 = b[i], s1 = b[i1], s2 = b[i2];
-      s0 -= diagonal[i] * x[i];
-      s1 -= diagonal[i1] * x[i1];
-      s2 -= diagonal[i2] * x[i2];
-      const double *v = value.data() + 3 * group_start[g];
-      for (std::size_t k = group_start[g]; k < group_start[g + 1]; ++k, v += 3)
-        {
-          const double xk = x[column[k]];
-          s0 -= v[0] * xk;
-          s1 -= v[1] * xk;
-          s2 -= v[2] * xk;
-        }
-      r[i] = s0;
-      if (i + 1 < n)
-        r[i + 1] = s1;
-      if (i + 2 < n)
-        r[i + 2] = s2;
-    });
+    products<true>(r, x, &b);
   }
 } // namespace TissueContact

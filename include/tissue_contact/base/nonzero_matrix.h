@@ -93,6 +93,13 @@ namespace TissueContact
     }
 
   private:
+    /** @p y = A @p x, or @p y = *@p b - A @p x if @p residual. */
+    template <bool residual>
+    void
+    products(Vector<double>       &y,
+             const Vector<double> &x,
+             const Vector<double> *b) const;
+
     /** Group g's columns are column[group_start[g]] ...
      * column[group_start[g + 1] - 1], their values value[3 k + c] for row
      * 3 g + c. */
