@@ -148,45 +148,18 @@ namespace TissueContact
       layout[g]            = block_layout(g);
       std::size_t columns  = 0;
       std::size_t nonzeros = 0;
+      const auto  count    = [&](types::global_dof_index,
+                             const double a0,
+                             const double a1,
+                             const double a2) {
+        const std::size_t z = (a0 != 0.) + (a1 != 0.) + (a2 != 0.);
+        columns += (z != 0);
+        nonzeros += z;
+      };
       if (layout[g] != other)
-        {
-          // the k-th entries of the three rows share a column but at the
-          // two positions of the diagonal block, counted below
-          const types::global_dof_index i      = 3 * g;
-          const unsigned int            p      = layout[g];
-          const unsigned int            length = pattern.row_length(i);
-          const double *v0 = row_values(i), *v1 = row_values(i + 1),
-                       *v2 = row_values(i + 2);
-          for (unsigned int k = 1; k < length; ++k)
-            {
-              const unsigned int a = (v0[k] != 0.), b = (v1[k] != 0.),
-                                 c = (v2[k] != 0.);
-              nonzeros += a + b + c;
-              columns += a | b | c;
-            }
-          const auto nonzero = [](const double x, const double y) {
-            return static_cast<std::size_t>(x != 0. || y != 0.);
-          };
-          columns =
-            columns -
-            static_cast<std::size_t>(v0[1 + p] != 0. || v1[1 + p] != 0. ||
-                                     v2[1 + p] != 0.) -
-            static_cast<std::size_t>(v0[2 + p] != 0. || v1[2 + p] != 0. ||
-                                     v2[2 + p] != 0.) +
-            nonzero(v1[1 + p], v2[1 + p]) + nonzero(v0[1 + p], v2[2 + p]) +
-            nonzero(v0[2 + p], v1[2 + p]);
-        }
+        for_each_block_column(g, layout[g], count);
       else
-        for_each_merged_column(g,
-                               [&](types::global_dof_index,
-                                   const double a0,
-                                   const double a1,
-                                   const double a2) {
-                                 const std::size_t z =
-                                   (a0 != 0.) + (a1 != 0.) + (a2 != 0.);
-                                 columns += (z != 0);
-                                 nonzeros += z;
-                               });
+        for_each_merged_column(g, count);
       group_start[g + 1] = columns;
       entries[g]         = nonzeros;
     });
