@@ -21,7 +21,8 @@ namespace TissueContact
    * and 0.32 ms with the copy. It is the matrix ML's hierarchy is built
    * from (Trilinos' copy is made of it), once per hierarchy; the products
    * of GMRES and of the cycle's finest level use a NonzeroMatrix, which
-   * needs no SparsityPattern and is taken in 2 ms (base/nonzero_matrix.h).
+   * needs no SparsityPattern and is taken in 5.5-8 ms (one thread;
+   * base/nonzero_matrix.h).
    */
   void
   copy_nonzeros(const SparseMatrix<double> &A,
