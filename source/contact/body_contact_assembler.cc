@@ -606,14 +606,55 @@ namespace TissueContact
         if (unique_dofs[slot[i]] >= lo && unique_dofs[slot[i]] < hi)
           for (unsigned int j = 0; j < 21; ++j)
             block[slot[i]][slot[j]] += d.hessian[i][j];
+      // each row's entries found by one walk along the row (as
+      // SparseMatrix::add() finds them), but only for the first of a
+      // vertex's rows: the pattern stores its diagonal first and the other
+      // columns ascending, so the rows of one vertex, which have the same
+      // columns, hold a column of another vertex at the same place, and the
+      // next rows try that place first. Every entry receives one addition,
+      // as with add()
+      const SparsityPattern       &pattern = K->get_sparsity_pattern();
+      std::array<unsigned int, 21> place;
+      bool                         have_places = false;
       for (unsigned int i = 0; i < n_unique; ++i)
-        if (unique_dofs[i] >= lo && unique_dofs[i] < hi)
-          K->add(unique_dofs[i],
-                 n_unique,
-                 unique_dofs.data(),
-                 block[i].data(),
-                 false,
-                 true);
+        {
+          const types::global_dof_index row = unique_dofs[i];
+          if (row < lo || row >= hi)
+            continue;
+          double            *values = &K->diag_element(row);
+          const unsigned int length = pattern.row_length(row);
+          unsigned int       at     = 1;
+          for (unsigned int j = 0; j < n_unique; ++j)
+            {
+              const types::global_dof_index column = unique_dofs[j];
+              if (column == row)
+                {
+                  values[0] += block[i][j];
+                  place[j] = 0;
+                  continue;
+                }
+              if (have_places && place[j] >= at && place[j] < length &&
+                  pattern.column_number(row, place[j]) == column)
+                at = place[j];
+              else
+                while (at < length && pattern.column_number(row, at) < column)
+                  ++at;
+              if (at == length || pattern.column_number(row, at) != column)
+                {
+                  // only a zero may miss its place, as with add()
+                  AssertThrow(block[i][j] == 0.,
+                              ExcMessage("A contact pair's coupling (row " +
+                                         std::to_string(row) + ", column " +
+                                         std::to_string(column) +
+                                         ") is not in the matrix's pattern."));
+                  place[j] = 0;
+                  continue;
+                }
+              values[at] += block[i][j];
+              place[j] = at;
+            }
+          have_places = true;
+        }
     }
 
 

@@ -65,9 +65,10 @@ main(int argc, char **argv)
   const auto          &contact = *problem.contact_assembler();
   const Vector<double> x       = problem.displacement(u);
   const auto           n       = x.size();
-  PatternRows          rows(n);
-  for (types::global_dof_index i = 0; i < n; ++i)
-    rows[i].push_back(i);
+  // the finite element pattern and the couplings across pairs, as the
+  // program builds it: a pair also adds within its tetrahedron and triangle
+  PatternRows rows = rows_of(problem.discretization().sparsity_pattern);
+  AssertThrow(rows.size() == n, ExcInternalError());
   contact.add_couplings(x, 0.01, rows);
   SparsityPattern pattern;
   to_pattern(rows, pattern);
