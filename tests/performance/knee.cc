@@ -214,7 +214,15 @@ main(int argc, char **argv)
         prm = a;
     }
   if (child)
-    return run_one(prm, quick);
+    try
+      {
+        return run_one(prm, quick);
+      }
+    catch (const std::exception &e)
+      {
+        std::cout << "run failed: " << e.what() << "\n";
+        return 1;
+      }
 
   std::cout << "The knee-scale scene " << prm << (quick ? " (--quick)" : "")
             << ", start to end. Times in s (wall); elastic: the elastic "
