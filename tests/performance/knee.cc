@@ -93,8 +93,7 @@ namespace
                                "meshes/knee.geo and meshes/knee_tube.geo "
                                "only; " +
                                prm_file + " uses neither"));
-        prm += "\nsubsection Mesh\n  set Gmsh options = " + options +
-               "\nend\n";
+        prm += "\nsubsection Mesh\n  set Gmsh options = " + options + "\nend\n";
       }
     const std::string out_dir =
       (std::filesystem::temp_directory_path() / "tissue_contact_knee_benchmark")
@@ -131,9 +130,9 @@ namespace
     getrusage(RUSAGE_SELF, &usage);
 
     // one evaluation of each kind at the end state (ms, mean of 3)
-    Problem             &problem = sim.problem();
-    const auto           n       = problem.n_dofs();
-    const auto          &u       = sim.solution();
+    Problem    &problem = sim.problem();
+    const auto  n       = problem.n_dofs();
+    const auto &u       = sim.solution();
     // the pattern the run built last served its last tangent; the converged
     // state may have contact pairs it lacks
     problem.update_sparsity_pattern(u);
