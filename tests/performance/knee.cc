@@ -81,11 +81,16 @@ namespace
       prm.insert(at, folder + "/");
     if (quick)
       {
-        // the coarse mesh of the scene's geometry
+        // the coarse mesh of the scene's geometry (its Mesh/File entry)
+        const std::string geometry =
+          std::filesystem::path(
+            Scene::SceneParameters::from_string(prm).mesh.file)
+            .filename()
+            .string();
         const std::string options =
-          prm.find("knee_tube.geo") != std::string::npos ?
+          geometry == "knee_tube.geo" ?
             "-setnumber h 0.012" :
-          prm.find("knee.geo") != std::string::npos ?
+          geometry == "knee.geo" ?
             "-setnumber h 0.06 -setnumber n_2pi 5 -setnumber pat_refine 2" :
             "";
         AssertThrow(!options.empty(),
