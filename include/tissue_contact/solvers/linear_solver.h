@@ -207,12 +207,16 @@ namespace TissueContact
       unsigned int        null_space_dimension;
 
       /** GMRES with AMG from the iterate @p x to the residual @p target
-       * (absolute); builds the hierarchy if there is none. */
+       * (absolute); builds the hierarchy if there is none. With @p
+       * stop_on_stagnation (a failure falls back to the direct solver) a
+       * fresh hierarchy's solve stops when its restart cycles stagnate
+       * (StagnationControl). */
       unsigned int
       solve_amg(const SparseMatrix<double> &K,
                 Vector<double>             &x,
                 const Vector<double>       &b,
                 const double                target,
+                const bool                  stop_on_stagnation,
                 bool                       &converged) const;
 
       /** The tangent's nonzeros, GMRES's operator: the same products at
