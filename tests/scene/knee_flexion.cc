@@ -13,11 +13,17 @@
 // tangent after an energy at slightly different positions, and again at
 // the same positions (from the reused pairs), equal bit for bit those of a
 // pass over all candidates right after a new search; so do the energy at
-// the nearby positions, and its second evaluation.
+// the nearby positions, and its second evaluation. Last, a tangent on the
+// finite element pattern alone, without the contact couplings: the
+// assembly refuses it with a message naming the coupling it misses (a
+// release build of SparseMatrix::add() would have added the value to
+// another entry of the row).
 
 #include "scenes.h"
 
 #include <tissue_contact/contact/contact_assembler.h>
+
+#include <sstream>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -107,4 +113,25 @@ main(int argc, char **argv)
              "residual and tangent twice, against passes after a new "
              "search: equal bit for bit "
           << equal << std::endl;
+
+  SparseMatrix<double> K_fe(problem.discretization().sparsity_pattern);
+  std::string          message;
+  try
+    {
+      contact.assemble(x, R, &K_fe);
+    }
+  catch (const ExceptionBase &e)
+    {
+      // deal.II wraps the message's lines: one space for each gap
+      std::istringstream words(e.what());
+      for (std::string word; words >> word;)
+        message += word + " ";
+    }
+  deallog << "a tangent on the finite element pattern alone: refused, the "
+             "missing coupling named: "
+          << (message.find("A contact pair's coupling (row ") !=
+                std::string::npos &&
+              message.find(") is not in the matrix's pattern. ") !=
+                std::string::npos)
+          << std::endl;
 }
