@@ -21,15 +21,18 @@ namespace TissueContact
      *   r_c \left(\frac{r_c}{r_{c-1}}\right)^{m} > \text{tolerance}
      *   \quad\Longrightarrow\quad \text{failure}.
      * @f]
-     * A restarted GMRES that stagnates keeps stagnating (each cycle
-     * minimizes over the same kind of space, and a cycle that reduced the
-     * residual by 1 % leaves the next nothing new to find), so a solve
-     * that would have run to its cap anyway stops cycles early; one whose
-     * cycles keep their rate is not touched, iteration for iteration. It
-     * is meant where a failure has a remedy that does not use the iterate
-     * (the automatic solver's direct fallback, which starts from zero),
-     * so that stopping early changes nothing but the iterations spent.
-     * With @p restart = 0 it is a plain SolverControl.
+     * A restarted GMRES that stagnates tends to go on stagnating (each
+     * cycle starts a Krylov space of the same dimension from a residual
+     * that has hardly changed), so a solve that would have run to its cap
+     * anyway stops cycles early; one whose cycles keep their rate is not
+     * touched, iteration for iteration. It is a prediction, not a proof: a
+     * solve that would have found its rate again before the cap is stopped
+     * too. It is meant where a failure has a remedy that does not use the
+     * iterate (the automatic solver's direct fallback, which starts from
+     * zero), so that stopping a solve that would have failed changes
+     * nothing but the iterations spent, and stopping one that would have
+     * converged late gives the exact step instead of an inexact one. With
+     * @p restart = 0 it is a plain SolverControl.
      */
     class StagnationControl : public SolverControl
     {
