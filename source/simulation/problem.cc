@@ -134,7 +134,8 @@ namespace TissueContact
 
 
   void
-  Problem::rebuild_sparsity_pattern(const Vector<double> &u)
+  Problem::rebuild_sparsity_pattern(const Vector<double> &u,
+                                    const bool            keep_couplings)
   {
     const auto scope = time_section(timer, "contact: pattern build");
     ++n_pattern_builds;
@@ -150,7 +151,18 @@ namespace TissueContact
         // times as its contact zones move), the contact couplings merged
         // into them, the rigid bodies' rows added, and the rows written
         // into the pattern at once
-        PatternRows rows = rows_of(assembler.sparsity_pattern());
+        PatternRows rows =
+          rows_of(keep_couplings ? sparsity : assembler.sparsity_pattern());
+        if (keep_couplings && rigid)
+          {
+            // the finite element rows as they were before the bodies'
+            // couplings were added: those are numbered after all finite
+            // element DoFs, at the end of each row, and in rows of their own
+            rows.resize(assembler.sparsity_pattern().n_rows());
+            for (auto &row : rows)
+              while (!row.empty() && row.back() >= rows.size())
+                row.pop_back();
+          }
         if (body_contact)
           contact->add_couplings(fe_displacement(u), coupling_margin, rows);
         if (rigid)
@@ -298,12 +310,17 @@ namespace TissueContact
 
 
   bool
-  Problem::update_sparsity_pattern(const Vector<double> &u)
+  Problem::update_sparsity_pattern(const Vector<double> &u,
+                                   const bool            keep_couplings)
   {
-    if (!contact || scene.parameters.contact.pairs.empty() ||
-        contact->has_couplings(fe_displacement(u), sparsity))
+    if (!contact || scene.parameters.contact.pairs.empty())
       return false;
-    rebuild_sparsity_pattern(u);
+    if (!keep_couplings)
+      next_build_fresh = true;
+    if (contact->has_couplings(fe_displacement(u), sparsity))
+      return false;
+    rebuild_sparsity_pattern(u, keep_couplings && !next_build_fresh);
+    next_build_fresh = false;
     return true;
   }
 

@@ -1,4 +1,5 @@
 #include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/base/nonzero_copy.h>
 #include <tissue_contact/solvers/amg_preconditioner.h>
 #include <tissue_contact/solvers/linear_solver.h>
 #include <tissue_contact/solvers/stagnation_control.h>
@@ -337,7 +338,12 @@ namespace TissueContact
           // and again per tangent shift, at 5.8 ms per iteration
           if (!converged && chosen.direct_fallback)
             {
-              solve_direct(K, x, b);
+              // the nonzeros, as GMRES and AMG saw them: a pattern that
+              // kept couplings no longer in contact
+              // (NonlinearProblem::update_sparsity_pattern()) factorizes to
+              // the same bits
+              copy_nonzeros(K, fallback_pattern, fallback_matrix);
+              solve_direct(fallback_matrix, x, b);
               ++n_direct_fallbacks;
             }
         }

@@ -263,7 +263,12 @@ namespace TissueContact
           bool valid;
           {
             const auto scope = time_section(timer, "assembly");
-            if (problem.update_sparsity_pattern(u))
+            // within an increment a new pattern keeps the couplings of
+            // the one it replaces where the linear solves see only the
+            // nonzeros (a pair that leaves and comes back calls for no
+            // second build; doc/theory/05-contact.md sec. 7)
+            if (problem.update_sparsity_pattern(
+                  u, it > 0 && linear_solver->sees_nonzeros_only(n)))
               K.reinit(problem.sparsity_pattern());
             valid = problem.assemble(u, load_factor, R, &K);
           }

@@ -17,10 +17,16 @@
 // finite element pattern alone, without the contact couplings: the
 // assembly refuses it with a message naming the coupling it misses (a
 // release build of SparseMatrix::add() would have added the value to
-// another entry of the row).
+// another entry of the row). And the pattern a Newton iteration within an
+// increment builds where the linear solves see only the nonzeros
+// (NonlinearProblem::update_sparsity_pattern() with keep_couplings): it
+// holds the couplings of the pattern it replaced, the tangent assembled on
+// it has the same nonzeros to the bit as on a pattern built anew, and a
+// call without keep_couplings makes the next build start anew.
 
 #include "scenes.h"
 
+#include <tissue_contact/base/nonzero_copy.h>
 #include <tissue_contact/contact/contact_assembler.h>
 
 #include <sstream>
@@ -133,5 +139,72 @@ main(int argc, char **argv)
                 std::string::npos &&
               message.find(") is not in the matrix's pattern. ") !=
                 std::string::npos)
+          << std::endl;
+
+  // the couplings at the end, beyond it and halfway (the displacement
+  // times 1.2 and 0.5: configurations, not equilibria), each pattern copied
+  // as it is built
+  Problem       &p = sim.problem();
+  Vector<double> beyond(u), half(u);
+  beyond *= 1.2;
+  half *= 0.5;
+  const auto update = [&](const Vector<double> &v, const bool keep) {
+    const bool built = p.update_sparsity_pattern(v, keep);
+    auto       copy  = std::make_unique<SparsityPattern>();
+    copy->copy_from(p.sparsity_pattern());
+    return std::make_pair(built, std::move(copy));
+  };
+  // a holds every entry of b
+  const auto holds = [](const SparsityPattern &a, const SparsityPattern &b) {
+    for (auto e = b.begin(); e != b.end(); ++e)
+      if (!a.exists(e->row(), e->column()))
+        return false;
+    return true;
+  };
+  const auto same = [&](const SparsityPattern &a, const SparsityPattern &b) {
+    return a.n_nonzero_elements() == b.n_nonzero_elements() && holds(a, b);
+  };
+  // the residual and the tangent's nonzeros at the end state on the
+  // problem's current pattern
+  const auto tangent = [&](Vector<double>       &R,
+                           SparsityPattern      &nonzero_pattern,
+                           SparseMatrix<double> &nonzeros) {
+    SparseMatrix<double> K(p.sparsity_pattern());
+    R.reinit(p.n_dofs());
+    p.assemble(u, 1., R, &K);
+    copy_nonzeros(K, nonzero_pattern, nonzeros);
+  };
+  const auto [built_over, over] = update(beyond, false);
+  const auto [built_end, end]   = update(u, false);
+  Vector<double>       R_end, R_kept;
+  SparsityPattern      nz_end, nz_kept;
+  SparseMatrix<double> K_end, K_kept;
+  tangent(R_end, nz_end, K_end);
+  const auto [built_kept, kept] = update(beyond, true);
+  tangent(R_kept, nz_kept, K_kept);
+  bool equal_tangents = same(nz_end, nz_kept) && R_kept == R_end;
+  for (auto e = K_end.begin(); equal_tangents && e != K_end.end(); ++e)
+    equal_tangents = K_kept.el(e->row(), e->column()) == e->value();
+  // no coupling missing at the end state: no build, but the next starts
+  // anew; a pattern built anew halfway by another route to compare with
+  const bool built_again               = update(u, false).first;
+  const auto [built_half, half_kept]   = update(half, true);
+  const auto [built_over2, over2]      = update(beyond, false);
+  const auto [built_fresh, half_fresh] = update(half, false);
+  deallog << "patterns built beyond the end state, at it, beyond it keeping "
+             "the couplings: "
+          << built_over << built_end << built_kept
+          << "; it holds both the others: "
+          << (holds(*kept, *over) && holds(*kept, *end))
+          << ", more entries than either: "
+          << (kept->n_nonzero_elements() >
+              std::max(over->n_nonzero_elements(), end->n_nonzero_elements()))
+          << "; the residual and the tangent's nonzeros at the end state on "
+             "it and on the end's pattern equal bit for bit: "
+          << equal_tangents << std::endl;
+  deallog << "after a call without keeping (no build: " << !built_again
+          << "), a build halfway asked to keep the couplings starts anew: "
+          << (built_half && built_over2 && built_fresh &&
+              same(*half_kept, *half_fresh) && same(*over2, *over))
           << std::endl;
 }

@@ -154,7 +154,8 @@ namespace TissueContact
       return sparsity;
     }
     bool
-    update_sparsity_pattern(const Vector<double> &u) override;
+    update_sparsity_pattern(const Vector<double> &u,
+                            const bool keep_couplings = false) override;
     bool
     assemble(const Vector<double> &u,
              const double          load_factor,
@@ -224,10 +225,16 @@ namespace TissueContact
   private:
     /** sparsity = the FE pattern + the contact couplings at @p u (with a
      * margin of half the smallest cell diameter, so that nearby pairs do
-     * not force a rebuild at every iteration). */
+     * not force a rebuild at every iteration); with @p keep_couplings
+     * the current pattern's couplings stay in it too. */
     void
-                             rebuild_sparsity_pattern(const Vector<double> &u);
-    unsigned int             n_pattern_builds = 0;
+                 rebuild_sparsity_pattern(const Vector<double> &u,
+                                          const bool            keep_couplings = false);
+    unsigned int n_pattern_builds = 0;
+    /** The next build starts from the finite element pattern even if it
+     * is asked to keep the couplings: a call without keep_couplings has
+     * come since the last build (a new load increment). */
+    bool                     next_build_fresh = true;
     std::vector<std::string> multiplier_warning_lines;
 
   public:

@@ -185,6 +185,17 @@ namespace TissueContact
               const double eta_previous,
               const double tolerance) const;
 
+      /** Whether solves of an @p n_dofs x @p n_dofs matrix see only its
+       * nonzeros: GMRES multiplies with them, AMG is built from them and
+       * the direct fallback of Type = automatic factorizes them. Entries
+       * stored but zero then change no bit of a solution; the direct
+       * solver chosen as such factorizes every stored entry. */
+      bool
+      sees_nonzeros_only(const types::global_dof_index n_dofs) const
+      {
+        return parameters.resolved(n_dofs).type != "direct";
+      }
+
       /** The solves of Type = automatic that fell back to the direct
        * solver, since construction. */
       unsigned int
@@ -222,6 +233,10 @@ namespace TissueContact
       /** The tangent's nonzeros, GMRES's operator: the same products at
        * 40 % of the cost on the full knee (0.16 against 0.41 ms). */
       mutable NonzeroMatrix nonzeros;
+      /** The tangent's nonzeros as a matrix the direct fallback
+       * factorizes, and its pattern. */
+      mutable SparsityPattern      fallback_pattern;
+      mutable SparseMatrix<double> fallback_matrix;
 
       /** The hierarchy (with its copy of the matrix it was built from). */
       mutable std::unique_ptr<AMGPreconditioner> amg;

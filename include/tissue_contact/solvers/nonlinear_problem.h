@@ -38,11 +38,19 @@ namespace TissueContact
        * sparsity_pattern() hold every coupling that tangent will have (new
        * contact pairs couple nodes of different elements). Returns true if
        * the pattern changed; the solver then re-initializes its matrix.
+       * With @p keep_couplings a new pattern may also keep the couplings
+       * of the one it replaces that are no longer needed (their entries
+       * stay zero): a solver passes it when its linear solves see only the
+       * nonzeros and since its last call without it (at the start of a
+       * load increment), so that a pair that leaves and comes back within
+       * an increment calls for no second build.
        */
       virtual bool
-      update_sparsity_pattern(const Vector<double> &u)
+      update_sparsity_pattern(const Vector<double> &u,
+                              const bool            keep_couplings = false)
       {
         (void)u;
+        (void)keep_couplings;
         return false;
       }
 
@@ -163,9 +171,10 @@ namespace TissueContact
         return inner.sparsity_pattern();
       }
       bool
-      update_sparsity_pattern(const Vector<double> &u) override
+      update_sparsity_pattern(const Vector<double> &u,
+                              const bool keep_couplings = false) override
       {
-        return inner.update_sparsity_pattern(u);
+        return inner.update_sparsity_pattern(u, keep_couplings);
       }
       bool
       assemble(const Vector<double> &u,
