@@ -19,7 +19,8 @@ namespace TissueContact
    * Cost, on a tangent of the full knee (29 706 rows, 2.24 million stored
    * entries, one thread): 25 ms, against 1.07 ms for a product with @p A
    * and 0.32 ms with the copy. It is the matrix ML's hierarchy is built
-   * from (Trilinos' copy is made of it), once per hierarchy; the products
+   * from (Trilinos' copy is made of it), once per hierarchy, and the one
+   * the direct fallback of Type = automatic factorizes; the products
    * of GMRES and of the cycle's finest level use a NonzeroMatrix, which
    * needs no SparsityPattern and is taken in 5.5-8 ms (one thread;
    * base/nonzero_matrix.h).
