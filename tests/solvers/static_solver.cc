@@ -29,6 +29,7 @@
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/trilinos_precondition.h>
 
@@ -614,6 +615,63 @@ namespace
             << (A.residual(r, x, b) <= 1e-8 * b.l2_norm()) << std::endl;
   }
 
+  // The direct fallback of GMRES+AMG chosen by Type = automatic
+  // (doc/theory/04-solver.md, 4.5.1) on the 100 x 100 Laplacian shifted into
+  // indefiniteness (minus 2 I: eigenvalues between -2 and 6), with GMRES
+  // restarted after 2 vectors: its restart cycles stagnate, the solve stops
+  // long before the cap of 1 000 iterations, and the direct solver makes
+  // the step from the matrix's nonzeros: the same matrix with zeros stored
+  // in more places of its pattern (as a contact pattern that kept the
+  // couplings of pairs no longer in contact) gives the same step to the
+  // last bit, that of UMFPACK on the matrix itself. UMFPACK given the
+  // stored zeros too orders its pivots otherwise and rounds otherwise.
+  void
+  direct_fallback()
+  {
+    const Laplacian      laplacian(100);
+    const auto           n = laplacian.n;
+    SparseMatrix<double> A = laplacian(1.);
+    for (unsigned int i = 0; i < n; ++i)
+      A.diag_element(i) -= 2.;
+    DynamicSparsityPattern dsp(n, n);
+    for (const auto &e : A)
+      dsp.add(e.row(), e.column());
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        dsp.add(i, (i + 7) % n);
+        dsp.add((i + 7) % n, i);
+      }
+    SparsityPattern wide_pattern;
+    wide_pattern.copy_from(dsp);
+    SparseMatrix<double> W(wide_pattern);
+    for (const auto &e : A)
+      W.set(e.row(), e.column(), e.value());
+    Vector<double> b(n), x(n), y(n), z(n), z_wide(n);
+    b = 1.;
+    Solvers::LinearSolver::Parameters p;
+    p.type            = "GMRES+AMG";
+    p.direct_fallback = true;
+    p.gmres_restart   = 2;
+    const Solvers::LinearSolver narrow(p), wide(p);
+    const unsigned int          iterations = narrow.solve(A, x, b, 1e-8);
+    wide.solve(W, y, b, 1e-8);
+    SparseDirectUMFPACK lu, lu_wide;
+    lu.initialize(A);
+    lu.vmult(z, b);
+    lu_wide.initialize(W);
+    lu_wide.vmult(z_wide, b);
+    deallog << "direct fallback: GMRES(2) with AMG on the indefinite "
+               "Laplacian stops after "
+            << iterations << " iterations (before the cap: "
+            << (iterations < p.max_iterations) << "), fell back "
+            << narrow.direct_fallbacks() << " and " << wide.direct_fallbacks()
+            << " times; the step equals UMFPACK's on the matrix bit for bit: "
+            << (x == z)
+            << ", with zeros stored in more places too: " << (y == z)
+            << " (UMFPACK given them rounds otherwise: " << (z_wide != z) << ")"
+            << std::endl;
+  }
+
   // The stop of a stagnating restarted GMRES (Solvers::StagnationControl;
   // doc/theory/04-solver.md, 4.5.1), GMRES(10) to 1e-8 within 1 000
   // iterations: on the cyclic shift of 200 unknowns with b = e_0 every
@@ -938,6 +996,7 @@ main(int argc, char **argv)
   kept_hierarchy();
   gmres_restart();
   stagnation_control();
+  direct_fallback();
   threaded_amg();
   nonzero_operator();
   rigid_body();
