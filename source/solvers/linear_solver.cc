@@ -342,8 +342,10 @@ namespace TissueContact
               // kept couplings no longer in contact
               // (NonlinearProblem::update_sparsity_pattern()) factorizes to
               // the same bits
-              copy_nonzeros(K, fallback_pattern, fallback_matrix);
-              solve_direct(fallback_matrix, x, b);
+              SparsityPattern      pattern;
+              SparseMatrix<double> K_nonzeros;
+              copy_nonzeros(K, pattern, K_nonzeros);
+              solve_direct(K_nonzeros, x, b);
               ++n_direct_fallbacks;
             }
         }

@@ -233,10 +233,6 @@ namespace TissueContact
       /** The tangent's nonzeros, GMRES's operator: the same products at
        * 40 % of the cost on the full knee (0.16 against 0.41 ms). */
       mutable NonzeroMatrix nonzeros;
-      /** The tangent's nonzeros as a matrix the direct fallback
-       * factorizes, and its pattern. */
-      mutable SparsityPattern      fallback_pattern;
-      mutable SparseMatrix<double> fallback_matrix;
 
       /** The hierarchy (with its copy of the matrix it was built from). */
       mutable std::unique_ptr<AMGPreconditioner> amg;

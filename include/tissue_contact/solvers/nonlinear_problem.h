@@ -40,10 +40,11 @@ namespace TissueContact
        * the pattern changed; the solver then re-initializes its matrix.
        * With @p keep_couplings a new pattern may also keep the couplings
        * of the one it replaces that are no longer needed (their entries
-       * stay zero): a solver passes it when its linear solves see only the
-       * nonzeros and since its last call without it (at the start of a
-       * load increment), so that a pair that leaves and comes back within
-       * an increment calls for no second build.
+       * stay zero), so that a pair that leaves and comes back calls for no
+       * second build: a solver whose linear solves see only the nonzeros
+       * passes it at every call of a load increment but the first. A call
+       * without it makes the next build start anew, so the kept couplings
+       * are those of one increment at most.
        */
       virtual bool
       update_sparsity_pattern(const Vector<double> &u,
