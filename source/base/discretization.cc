@@ -2,12 +2,16 @@
 
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <algorithm>
 
 namespace TissueContact
 {
   Discretization::Discretization(const Triangulation<3> &triangulation,
                                  const unsigned int      degree,
-                                 const bool              reduced_quadrature)
+                                 const bool              reduced_quadrature,
+                                 const bool              renumber)
     : degree(degree)
     , fe(FE_SimplexP<3>(degree), 3)
     , mapping(FE_SimplexP<3>(1))
@@ -22,9 +26,61 @@ namespace TissueContact
                            "tetrahedra) or 2 (quadratic tetrahedra), not " +
                            std::to_string(degree)));
     dof_handler.distribute_dofs(fe);
+    if (!renumber || !renumber_by_points())
+      make_sparsity_pattern();
+  }
+
+
+  void
+  Discretization::make_sparsity_pattern()
+  {
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     DoFTools::make_sparsity_pattern(dof_handler, dsp);
     sparsity_pattern.copy_from(dsp);
+  }
+
+
+  bool
+  Discretization::renumber_by_points()
+  {
+    const types::global_dof_index n = dof_handler.n_dofs();
+    if (n % 3 != 0)
+      return false;
+    // the points' graph; each point's DoFs must be 3 g + c: those of the
+    // same base function of a cell, its component c
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    DynamicSparsityPattern               graph(n / 3);
+    std::vector<types::global_dof_index> points;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        points.clear();
+        for (unsigned int k = 0; k < dofs.size(); ++k)
+          {
+            const auto [c, b] = fe.system_to_component_index(k);
+            if (c != 0)
+              continue;
+            if (dofs[k] % 3 != 0)
+              return false;
+            for (unsigned int j = 0; j < dofs.size(); ++j)
+              if (fe.system_to_component_index(j).second == b &&
+                  dofs[j] != dofs[k] + fe.system_to_component_index(j).first)
+                return false;
+            points.push_back(dofs[k] / 3);
+          }
+        std::sort(points.begin(), points.end());
+        for (const auto g : points)
+          graph.add_entries(g, points.begin(), points.end(), true);
+      }
+    std::vector<DynamicSparsityPattern::size_type> new_point(n / 3);
+    SparsityTools::reorder_Cuthill_McKee(graph, new_point);
+    std::vector<types::global_dof_index> new_dof(n);
+    for (types::global_dof_index i = 0; i < n; ++i)
+      new_dof[i] = 3 * new_point[i / 3] + i % 3;
+    dof_handler.renumber_dofs(new_dof);
+    make_sparsity_pattern();
+    points_renumbered = true;
+    return true;
   }
 
 

@@ -271,6 +271,23 @@ namespace TissueContact
           f_ext.add(dofs, local);
         }
 
+      // the cells in the order of their lowest DoF where the DoFs are
+      // numbered point by point in Cuthill-McKee order (Discretization):
+      // cells that follow each other share rows of the tangent, and the
+      // serial scatter below finds them in the cache (doc/theory/02-weak-
+      // form-and-linearization.md sec. 2.3)
+      if (disc.points_renumbered)
+        {
+          std::vector<types::global_dof_index> lowest(n_cells);
+          for (unsigned int c = 0; c < n_cells; ++c)
+            lowest[c] = *std::min_element(&cell_dofs[c * n_local],
+                                          &cell_dofs[c * n_local] + n_local);
+          std::stable_sort(deformable_cells.begin(),
+                           deformable_cells.end(),
+                           [&](const unsigned int a, const unsigned int b) {
+                             return lowest[a] < lowest[b];
+                           });
+        }
       for (const unsigned int c : deformable_cells)
         {
           double volume = 0.;

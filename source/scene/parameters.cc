@@ -392,6 +392,20 @@ namespace TissueContact
         "quadratic tetrahedra in most codes), at less than half the assembly "
         "cost; doc/users/choosing.md measures both.",
         Patterns::Selection("full|reduced"));
+      prm.add_parameter(
+        "DoF numbering",
+        dof_numbering,
+        "as meshed: the unknowns in the order deal.II distributes them, cell "
+        "by cell in the mesh file's order; Cuthill-McKee: support point by "
+        "support point in the Cuthill-McKee order of the points' graph, and "
+        "the elastic assembly's cells in the order of their lowest unknown, "
+        "so that neighbours lie close in memory. The same equations; the "
+        "sums, the AMG hierarchy's aggregates and so the Newton path differ. "
+        "Measured on the full knee (doc/theory/02-weak-form-and-"
+        "linearization.md sec. 2.3): a fifth less time per GMRES iteration "
+        "and elastic assembly on its first 8 increments, but the whole run's "
+        "one try took a longer path.",
+        Patterns::Selection("as meshed|Cuthill-McKee"));
       prm.leave_subsection();
 
       prm.enter_subsection("Bodies");

@@ -18,7 +18,8 @@ namespace TissueContact
     : scene(parameters)
     , disc(scene.triangulation,
            parameters.degree,
-           parameters.stiffness_quadrature == "reduced")
+           parameters.stiffness_quadrature == "reduced",
+           parameters.dof_numbering == "Cuthill-McKee")
     , assembler(disc, scene.body_data(), scene.dead_loads())
     , prescribed(scene.prescribed_dofs(disc))
     , coupling_margin(0.5 *

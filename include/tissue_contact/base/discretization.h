@@ -27,6 +27,12 @@ namespace TissueContact
    * the same rule as the mass matrix, 14 points, or 6 points exact to
    * degree 3 when reduced), the DoF handler and the sparsity
    * pattern of the stiffness matrix.
+   *
+   * On request the DoFs are numbered support point by support point in
+   * Cuthill-McKee order (renumber_by_points()): neighbouring points get
+   * nearby numbers, so the rows a cell's entries go to, and the vector
+   * entries a matrix row reads, lie close together in memory
+   * (doc/theory/02-weak-form-and-linearization.md sec. 2.3).
    */
   class Discretization
   {
@@ -34,10 +40,12 @@ namespace TissueContact
     /** Distribute DoFs of degree @p degree on @p triangulation (which must
      * outlive this object). With @p reduced_quadrature, P2's stiffness
      * quadrature has 6 points (exact to degree 3) instead of 14 (degree
-     * 5). */
+     * 5). With @p renumber, the DoFs are numbered by
+     * renumber_by_points(). */
     Discretization(const Triangulation<3> &triangulation,
                    const unsigned int      degree,
-                   const bool              reduced_quadrature = false);
+                   const bool              reduced_quadrature = false,
+                   const bool              renumber           = false);
 
     const unsigned int     degree;
     const FESystem<3>      fe;
@@ -47,6 +55,24 @@ namespace TissueContact
     const QGaussSimplex<2> face_quadrature;
     DoFHandler<3>          dof_handler;
     SparsityPattern        sparsity_pattern;
+
+    /**
+     * Number the DoFs support point by support point in the Cuthill-McKee
+     * order of the points' graph (two points joined where a cell holds
+     * both), each point's x, y, z DoFs kept together as 3 g, 3 g + 1,
+     * 3 g + 2 as distribute_dofs() gave them, and build the sparsity
+     * pattern anew; left as they are if they are not so grouped. Returns
+     * whether it renumbered. Call it before anything is built on the DoFs.
+     */
+    bool
+    renumber_by_points();
+
+    /** Whether the DoFs are numbered by renumber_by_points(). */
+    bool points_renumbered = false;
+
+    /** The sparsity pattern of the DoFs as they are numbered. */
+    void
+    make_sparsity_pattern();
 
     /** Number of displacement unknowns. */
     types::global_dof_index
