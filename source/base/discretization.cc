@@ -46,8 +46,13 @@ namespace TissueContact
     const types::global_dof_index n = dof_handler.n_dofs();
     if (n % 3 != 0)
       return false;
-    // the points' graph; each point's DoFs must be 3 g + c: those of the
-    // same base function of a cell, its component c
+    // each point's DoFs must be 3 g + c
+    const auto at_point = support_point_dofs();
+    for (types::global_dof_index i = 0; i < n; ++i)
+      for (unsigned int c = 0; c < 3; ++c)
+        if (at_point[i][c] != i - i % 3 + c)
+          return false;
+    // the points' graph: two points joined where a cell holds both
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     DynamicSparsityPattern               graph(n / 3);
     std::vector<types::global_dof_index> points;
@@ -56,18 +61,8 @@ namespace TissueContact
         cell->get_dof_indices(dofs);
         points.clear();
         for (unsigned int k = 0; k < dofs.size(); ++k)
-          {
-            const auto [c, b] = fe.system_to_component_index(k);
-            if (c != 0)
-              continue;
-            if (dofs[k] % 3 != 0)
-              return false;
-            for (unsigned int j = 0; j < dofs.size(); ++j)
-              if (fe.system_to_component_index(j).second == b &&
-                  dofs[j] != dofs[k] + fe.system_to_component_index(j).first)
-                return false;
+          if (fe.system_to_component_index(k).first == 0)
             points.push_back(dofs[k] / 3);
-          }
         std::sort(points.begin(), points.end());
         for (const auto g : points)
           graph.add_entries(g, points.begin(), points.end(), true);
