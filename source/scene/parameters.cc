@@ -403,8 +403,9 @@ namespace TissueContact
         "sums, the AMG hierarchy's aggregates and so the Newton path differ. "
         "Measured on the full knee (doc/theory/02-weak-form-and-"
         "linearization.md sec. 2.3): a fifth less time per GMRES iteration "
-        "and elastic assembly on its first 8 increments, but the whole run's "
-        "one try took a longer path.",
+        "and elastic assembly on its first 8 increments, but over two whole "
+        "runs no gain per iteration (one on a longer path, one on a path as "
+        "long).",
         Patterns::Selection("as meshed|Cuthill-McKee"));
       prm.leave_subsection();
 
