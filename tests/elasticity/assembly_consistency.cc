@@ -131,8 +131,8 @@ check(const unsigned int degree)
           << ", energy() = " << assembler.energy(u_bad, lambda) << std::endl;
 
   // the DoFs numbered point by point in Cuthill-McKee order (as the
-  // constructor numbers them from Discretization::min_dofs_to_renumber
-  // unknowns on): each point's DoFs at 3 g + c, a narrower band, and the
+  // constructor numbers them with DoF numbering = Cuthill-McKee): each
+  // point's DoFs at 3 g + c, a narrower band, and the
   // same residual and tangent entry by entry to rounding (their sums run in
   // another order)
   Discretization renumbered(tria, degree);
