@@ -335,7 +335,29 @@ namespace TissueContact
       have_with_energy = false;
       survivors.resize(surface_triangles.size());
       with_energy.resize(surface_triangles.size());
+      make_frames(x, frames);
       return false;
+    }
+
+
+    void
+    BodyContactAssembler::make_frames(
+      const std::vector<Point<3>>   &x,
+      std::vector<TetrahedronFrame> &tet_frames) const
+    {
+      tet_frames.resize(tets.size());
+      parallel::apply_to_subranges(
+        0u,
+        static_cast<unsigned int>(tets.size()),
+        [&](const unsigned int begin, const unsigned int end) {
+          for (unsigned int k = begin; k < end; ++k)
+            {
+              const auto &kv = tets[k];
+              tet_frames[k]  = TetrahedronFrame(std::array<Point<3>, 4>{
+                 {x[kv[0]], x[kv[1]], x[kv[2]], x[kv[3]]}});
+            }
+        },
+        1024);
     }
 
 
@@ -379,19 +401,27 @@ namespace TissueContact
           return;
         }
       found.clear();
+      const auto &tv = surface.triangles[surface_triangles[i]];
+      const std::array<Point<3>, 3> tri{{x[tv[0]], x[tv[1]], x[tv[2]]}};
+      const TriangleFrame           tri_frame(tri);
       for (unsigned int c = offsets[i]; c < offsets[i + 1]; ++c)
         {
-          const PairGeometry geometry =
-            pair_geometry(x, candidates[c].t, candidates[c].k);
+          // the frame of a candidate a few ahead fetched now: the frames
+          // are read in no order the processor foresees, and the tests are
+          // short (doc/theory/05-contact.md, sec. 2.2)
+          if (c + 6 < offsets.back())
+            prefetch(frames[candidates[c + 6].k]);
+          const Candidate &candidate = candidates[c];
           // cheap rejection before differentiating: zero energy near this
           // position has zero gradient and Hessian
-          if (rejected(candidates[c].shared, geometry))
+          if (pair_rejected(
+                candidate.shared, frames[candidate.k], tri_frame, tri))
             continue;
           found.push_back(c);
-          f(candidates[c].t,
-            candidates[c].k,
-            pairs[candidates[c].pair],
-            geometry);
+          f(candidate.t,
+            candidate.k,
+            pairs[candidate.pair],
+            pair_geometry(x, candidate.t, candidate.k));
         }
     }
 
@@ -440,79 +470,6 @@ namespace TissueContact
       return {{x[kv[0]], x[kv[1]], x[kv[2]], x[kv[3]]},
               {x[tv[0]], x[tv[1]], x[tv[2]]},
               {depth[kv[0]], depth[kv[1]], depth[kv[2]], depth[kv[3]]}};
-    }
-
-
-    bool
-    BodyContactAssembler::rejected(const SharedVertices &shared,
-                                   const PairGeometry   &geometry) const
-    {
-      // (a tetrahedron of zero depth at all four vertices never gets here:
-      // it is not in the tree)
-      const auto &[tet, tri, g] = geometry;
-      const bool touching = shared[0] < 4 || shared[1] < 4 || shared[2] < 4;
-      // the boxes of triangle and tetrahedron apart by more than 1e-6 of the
-      // tetrahedron's size: the clipping could not find a point within
-      // roundoff of both, so the pair has no intersection. Cheaper than the
-      // tests below; boxes with a common vertex always overlap
-      if (!touching)
-        {
-          const BoundingBox<3> tet_box(tet), tri_box(tri);
-          const auto &[lo, hi]         = tet_box.get_boundary_points();
-          const auto &[tri_lo, tri_hi] = tri_box.get_boundary_points();
-          const double gap =
-            1e-6 * (hi[0] - lo[0] + hi[1] - lo[1] + hi[2] - lo[2]);
-          for (unsigned int d = 0; d < 3; ++d)
-            if (tri_lo[d] > hi[d] + gap || tri_hi[d] < lo[d] - gap)
-              return true;
-        }
-      // barycentric coordinates of the triangle's vertices
-      const Tensor<1, 3> e1 = tet[1] - tet[0], e2 = tet[2] - tet[0],
-                         e3   = tet[3] - tet[0];
-      const Tensor<1, 3> n1   = cross_product_3d(e2, e3),
-                         n2   = cross_product_3d(e3, e1),
-                         n3   = cross_product_3d(e1, e2);
-      const double six_volume = e1 * n1;
-      if (!(std::abs(six_volume) > 0.) || !std::isfinite(six_volume))
-        return false; // leave a degenerate tetrahedron to the clipping
-      // a face i separates if every vertex is outside it or a vertex of the
-      // tetrahedron other than i (on the face)
-      std::array<bool, 4> separates{{true, true, true, true}};
-      for (unsigned int a = 0; a < 3; ++a)
-        if (shared[a] < 4)
-          separates[shared[a]] = false;
-        else
-          {
-            const Tensor<1, 3>    r = tri[a] - tet[0];
-            std::array<double, 4> lambda;
-            lambda[1] = (r * n1) / six_volume;
-            lambda[2] = (r * n2) / six_volume;
-            lambda[3] = (r * n3) / six_volume;
-            lambda[0] = 1. - lambda[1] - lambda[2] - lambda[3];
-            for (unsigned int i = 0; i < 4; ++i)
-              separates[i] = separates[i] && lambda[i] < -1e-6;
-          }
-      if (separates[0] || separates[1] || separates[2] || separates[3])
-        return true;
-      // the triangle's plane separates if every vertex of the tetrahedron
-      // lies on one side of it (beyond 1e-6 of the triangle's size), or is a
-      // vertex of the triangle (on the plane)
-      const Tensor<1, 3> normal =
-        cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]);
-      const double n = normal.norm();
-      if (!(n > 0.))
-        return false;
-      const double limit = 1e-6 * std::sqrt(n);
-      bool         above = true, below = true;
-      for (unsigned int j = 0; j < 4; ++j)
-        {
-          if (shared[0] == j || shared[1] == j || shared[2] == j)
-            continue;
-          const double d = normal * (tet[j] - tri[0]) / n;
-          above          = above && d > limit;
-          below          = below && d < -limit;
-        }
-      return above || below;
     }
 
 
@@ -735,6 +692,15 @@ namespace TissueContact
       // searches in parallel, their vertices appended to the vertices'
       // lists in the triangles' order, each list sorted once at the end
       std::vector<std::vector<unsigned int>> across(surface.X.size());
+      // the frames of the last evaluation if it was at these positions (as
+      // for the sparsity check that asked for this build), else made here
+      std::vector<TetrahedronFrame>        own_frames;
+      const std::vector<TetrahedronFrame> *tet_frames = &frames;
+      if (!have_survivors || x != x_at_survivors)
+        {
+          make_frames(x, own_frames);
+          tet_frames = &own_frames;
+        }
       struct Across
       {
         std::array<unsigned int, 3> triangle;
@@ -743,18 +709,21 @@ namespace TissueContact
       per_surface_triangle(
         [&](const unsigned int i, Across &found) {
           found.V.clear();
-          found.triangle = surface.triangles[surface_triangles[i]];
-          for_each_candidate_of(surface_triangles[i],
-                                x,
-                                margin,
-                                [&](const unsigned int t,
-                                    const unsigned int k,
-                                    const BodyContact &p) {
-                                  if (may_gain_energy(x, t, k, p, margin))
-                                    found.V.insert(found.V.end(),
-                                                   tets[k].begin(),
-                                                   tets[k].end());
-                                });
+          found.triangle         = surface.triangles[surface_triangles[i]];
+          const auto         &tv = found.triangle;
+          const TriangleFrame tri_frame(
+            std::array<Point<3>, 3>{{x[tv[0]], x[tv[1]], x[tv[2]]}});
+          for_each_candidate_of(
+            surface_triangles[i],
+            x,
+            margin,
+            [&](const unsigned int t,
+                const unsigned int k,
+                const BodyContact &p) {
+              if (may_gain_energy(
+                    x, t, k, p, margin, (*tet_frames)[k], tri_frame))
+                found.V.insert(found.V.end(), tets[k].begin(), tets[k].end());
+            });
           std::sort(found.V.begin(), found.V.end());
           found.V.erase(std::unique(found.V.begin(), found.V.end()),
                         found.V.end());
@@ -802,24 +771,24 @@ namespace TissueContact
                                           const unsigned int           t,
                                           const unsigned int           k,
                                           const BodyContact           &p,
-                                          const double margin) const
+                                          const double                 margin,
+                                          const TetrahedronFrame &tet_frame,
+                                          const TriangleFrame &tri_frame) const
     {
       const PairGeometry geometry = pair_geometry(x, t, k);
       const auto &[tet, tri, g]   = geometry;
       // the triangle's outward normal points into the body it can press
       // into: material of positive depth in front of the triangle (or
       // within the margin behind it) can meet it within a step
-      const Tensor<1, 3> normal =
-        double(surface.outward[t]) *
-        cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]);
-      const double n = normal.norm();
+      const Tensor<1, 3> normal = double(surface.outward[t]) * tri_frame.normal;
+      const double       n      = tri_frame.n;
       if (!(n > 0.) || !std::isfinite(n))
         return true;
       for (unsigned int j = 0; j < 4; ++j)
         if (g[j] > 0. && normal * (tet[j] - tri[0]) / n > -margin)
           return true;
       // a pair pressed through, with energy now, keeps its couplings
-      return !rejected(shared_vertices(t, k), geometry) &&
+      return !pair_rejected(shared_vertices(t, k), tet_frame, tri_frame, tri) &&
              method_of(p).energy(tet, tri, g, p.penalty) > 0.;
     }
 

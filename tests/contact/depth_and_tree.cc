@@ -12,12 +12,18 @@
 //  - the broad phase: the candidate pairs (boundary triangle, tetrahedron)
 //    of the tree equal a brute-force box test, before and after the mesh
 //    moves and the tree is refitted, and after a rebuild (with the trees'
-//    surface-area cost).
+//    surface-area cost);
+//  - the rejection before the clipping (pair_rejected()) against the
+//    clipping itself, on random pairs sharing no vertex, one or two, and
+//    on triangles just outside a face: no rejected pair has an
+//    intersection of positive area or positive energy beyond roundoff.
 
 #include "../tests.h"
 
 #include <tissue_contact/contact/bounding_volume_tree.h>
 #include <tissue_contact/contact/material_depth.h>
+#include <tissue_contact/contact/pair_rejection.h>
+#include <tissue_contact/contact/penalty_energy.h>
 
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/grid/grid_generator.h>
@@ -291,6 +297,105 @@ namespace
       deallog << "  " << names[r] << ": " << count[r] << " points, max error "
               << error_bound(error[r], -15) << std::endl;
   }
+
+  /** The point with barycentric coordinates @p lambda in @p tet. */
+  Point<3>
+  from_barycentric(const std::array<Point<3>, 4> &tet,
+                   const std::array<double, 4>   &lambda)
+  {
+    Point<3> p;
+    for (unsigned int j = 0; j < 4; ++j)
+      p += lambda[j] * tet[j];
+    return p;
+  }
+
+  void
+  rejection_against_clipping()
+  {
+    deallog << "rejection before the clipping against the clipping:"
+            << std::endl;
+    const std::array<std::string, 5> names = {
+      {"no shared vertex",
+       "one shared vertex",
+       "two shared vertices (an edge)",
+       "outside a face by 1e-8 to 1e-7",
+       "outside a face by 1e-5 to 1e-3"}};
+    for (unsigned int kind = 0; kind < 5; ++kind)
+      {
+        unsigned int n_rejected = 0, n_kept_cut = 0;
+        // the largest area (relative to the triangle's) and energy of a
+        // rejected pair: exactly zero, or the roundoff of a polygon that
+        // degenerates to the shared edge, whose depth is zero
+        double largest_area = 0., largest_W = 0.;
+        for (unsigned int r = 0; r < 4000; ++r)
+          {
+            std::array<Point<3>, 4> tet = {{Point<3>(0, 0, 0),
+                                            Point<3>(1, 0, 0),
+                                            Point<3>(0, 1, 0),
+                                            Point<3>(0, 0, 1)}};
+            for (auto &v : tet)
+              for (unsigned int d = 0; d < 3; ++d)
+                v[d] += 0.25 * random_value(-1., 1.);
+            std::array<Point<3>, 3>      tri;
+            std::array<unsigned char, 3> shared = {{4, 4, 4}};
+            std::array<double, 4>        g;
+            for (auto &gj : g)
+              gj = random_value(0., 0.2);
+            const unsigned int n_shared = kind < 3 ? kind : 0;
+            // the face the near-face triangles lie outside of
+            const unsigned int face = r % 4;
+            for (unsigned int a = 0; a < 3; ++a)
+              if (a < n_shared)
+                {
+                  // a surface vertex: depth zero
+                  tri[a]    = tet[a];
+                  shared[a] = a;
+                  g[a]      = 0.;
+                }
+              else if (kind < 3)
+                tri[a] = Point<3>(random_value(-0.6, 1.3),
+                                  random_value(-0.6, 1.3),
+                                  random_value(-0.6, 1.3));
+              else
+                {
+                  std::array<double, 4> lambda;
+                  const double          delta = kind == 3 ?
+                                                  random_value(1e-8, 1e-7) :
+                                                  std::pow(10., random_value(-5., -3.));
+                  double                sum   = 0.;
+                  for (unsigned int j = 0; j < 4; ++j)
+                    sum += (lambda[j] = j == face ? 0. : random_value(0., 1.));
+                  for (unsigned int j = 0; j < 4; ++j)
+                    lambda[j] =
+                      j == face ? -delta : lambda[j] * (1. + delta) / sum;
+                  tri[a] = from_barycentric(tet, lambda);
+                }
+            const bool rejected =
+              Contact::pair_rejected(shared,
+                                     Contact::TetrahedronFrame(tet),
+                                     Contact::TriangleFrame(tri),
+                                     tri);
+            const double area = Contact::intersection_area(tet, tri);
+            const double W    = Contact::penalty_energy_value(tet, tri, g, 1.);
+            n_rejected += rejected;
+            n_kept_cut += !rejected && W > 0.;
+            if (rejected)
+              {
+                largest_area =
+                  std::max(largest_area,
+                           area / (0.5 * cross_product_3d(tri[1] - tri[0],
+                                                          tri[2] - tri[0])
+                                           .norm()));
+                largest_W = std::max(largest_W, W);
+              }
+          }
+        deallog << "  " << names[kind] << ": 4000 pairs, " << n_rejected
+                << " rejected (largest area / triangle's "
+                << error_bound(largest_area, -13) << ", largest energy "
+                << error_bound(largest_W, -40) << "), kept with energy "
+                << n_kept_cut << std::endl;
+      }
+  }
 } // namespace
 
 int
@@ -309,6 +414,7 @@ main()
           << std::endl;
   tree_queries();
   broad_phase();
-  // last: it draws from the shared random generator
+  // last: they draw from the shared random generator
   triangle_distance_regions();
+  rejection_against_clipping();
 }

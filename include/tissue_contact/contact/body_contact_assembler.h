@@ -4,6 +4,7 @@
 #include <tissue_contact/contact/contact_interaction.h>
 #include <tissue_contact/contact/contact_parameters.h>
 #include <tissue_contact/contact/contact_surface.h>
+#include <tissue_contact/contact/pair_rejection.h>
 #include <tissue_contact/contact/penalty_kernel.h>
 
 #include <deal.II/base/multithread_info.h>
@@ -196,8 +197,9 @@ namespace TissueContact
        * positions overlap once the triangle's is enlarged by the margin. */
       mutable std::vector<Point<3>> x_reference;
       mutable bool                  have_candidates = false;
-      /** The candidates that passed rejected() in the last evaluation that
-       * tested them all: survivors[i] indexes those of surface_triangles[i]
+      /** The candidates that passed pair_rejected() in the last evaluation
+       * that tested them all: survivors[i] indexes those of
+       * surface_triangles[i]
        * in the list, in the list's order, at the positions
        * x_at_survivors. The residual and tangent and the sparsity check
        * that follow a line search's energy at the same positions visit only
@@ -205,6 +207,10 @@ namespace TissueContact
       mutable std::vector<std::vector<unsigned int>> survivors;
       mutable std::vector<Point<3>>                  x_at_survivors;
       mutable bool                                   have_survivors = false;
+      /** Each tetrahedron's box and barycentric frame at x_at_survivors,
+       * made by begin_survivors() for the pass that tests all candidates
+       * (pair_rejected()). */
+      mutable std::vector<TetrahedronFrame> frames;
       /** Of the survivors of surface_triangles[i], those with energy at
        * x_at_survivors (indices into the list), recorded by every pass over
        * the survivors: the pairs the assembly adds and the sparsity check
@@ -273,8 +279,8 @@ namespace TissueContact
             const F                     &f) const;
 
       /** Call @p f(t, k, pair, geometry) for every candidate of
-       * surface_triangles[i] in the list that rejected() does not reject at
-       * the positions @p x, in the list's order: only the recorded
+       * surface_triangles[i] in the list that pair_rejected() does not reject
+       * at the positions @p x, in the list's order: only the recorded
        * survivors if @p known (they were found at these positions), else
        * all candidates, recording the survivors. For a pass over all
        * triangles at the positions of the last update_candidates(), begun
@@ -357,22 +363,11 @@ namespace TissueContact
                     const unsigned int           t,
                     const unsigned int           k) const;
 
-      /** Whether the pair (triangle t, tetrahedron k, sharing the vertices
-       * @p shared) at @p geometry certainly has zero energy near this position, tested before the
-       * clipping (doc/theory/05-contact.md, sec. 2.2), for a candidate of
-       * for_each_candidate_of() (which has dropped the tetrahedra of zero
-       * depth at all four vertices): the boxes are apart, or a face plane of
-       * the tetrahedron separates the triangle from it (every vertex of the
-       * triangle is outside by more than 1e-6 in barycentric
-       * coordinates, or is a vertex of the tetrahedron on that face: the
-       * triangle then touches the tetrahedron in a point or an edge of
-       * zero depth, as a surface triangle does its neighbours), or the
-       * triangle's plane separates them (every vertex of the tetrahedron
-       * beyond 1e-6 of the triangle's size on one side, or a vertex of the
-       * triangle). */
-      bool
-      rejected(const SharedVertices &shared,
-               const PairGeometry   &geometry) const;
+      /** Each tetrahedron's rejection frame at the positions @p x, into
+       * @p tet_frames (sized to the tetrahedra), in parallel. */
+      void
+      make_frames(const std::vector<Point<3>>   &x,
+                  std::vector<TetrahedronFrame> &tet_frames) const;
 
       /** Whether the candidate pair (triangle t, tetrahedron k) at the
        * positions @p x is coupled in the matrix pattern: it has energy now,
@@ -383,13 +378,16 @@ namespace TissueContact
        * it, are left out: they would widen the pattern of every contact
        * surface by its neighbourhood without ever touching it. Whatever
        * this leaves out and later gains energy is caught by
-       * has_couplings(), which has the pattern rebuilt. */
+       * has_couplings(), which has the pattern rebuilt. @p tet_frame and
+       * @p tri_frame are the tetrahedron's and the triangle's at @p x. */
       bool
       may_gain_energy(const std::vector<Point<3>> &x,
                       const unsigned int           t,
                       const unsigned int           k,
                       const BodyContact           &p,
-                      const double                 margin) const;
+                      const double                 margin,
+                      const TetrahedronFrame      &tet_frame,
+                      const TriangleFrame         &tri_frame) const;
 
       std::array<types::global_dof_index, 21>
       pair_dofs(const unsigned int t, const unsigned int k) const;
