@@ -692,15 +692,6 @@ namespace TissueContact
       // searches in parallel, their vertices appended to the vertices'
       // lists in the triangles' order, each list sorted once at the end
       std::vector<std::vector<unsigned int>> across(surface.X.size());
-      // the frames of the last evaluation if it was at these positions (as
-      // for the sparsity check that asked for this build), else made here
-      std::vector<TetrahedronFrame>        own_frames;
-      const std::vector<TetrahedronFrame> *tet_frames = &frames;
-      if (!have_survivors || x != x_at_survivors)
-        {
-          make_frames(x, own_frames);
-          tet_frames = &own_frames;
-        }
       struct Across
       {
         std::array<unsigned int, 3> triangle;
@@ -720,8 +711,7 @@ namespace TissueContact
             [&](const unsigned int t,
                 const unsigned int k,
                 const BodyContact &p) {
-              if (may_gain_energy(
-                    x, t, k, p, margin, (*tet_frames)[k], tri_frame))
+              if (may_gain_energy(x, t, k, p, margin, tri_frame))
                 found.V.insert(found.V.end(), tets[k].begin(), tets[k].end());
             });
           std::sort(found.V.begin(), found.V.end());
@@ -772,7 +762,6 @@ namespace TissueContact
                                           const unsigned int           k,
                                           const BodyContact           &p,
                                           const double                 margin,
-                                          const TetrahedronFrame &tet_frame,
                                           const TriangleFrame &tri_frame) const
     {
       const PairGeometry geometry = pair_geometry(x, t, k);
@@ -788,7 +777,7 @@ namespace TissueContact
         if (g[j] > 0. && normal * (tet[j] - tri[0]) / n > -margin)
           return true;
       // a pair pressed through, with energy now, keeps its couplings
-      return !pair_rejected(shared_vertices(t, k), tet_frame, tri_frame, tri) &&
+      return !pair_rejected(shared_vertices(t, k), tet, tri_frame, tri) &&
              method_of(p).energy(tet, tri, g, p.penalty) > 0.;
     }
 

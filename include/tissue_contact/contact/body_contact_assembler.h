@@ -199,11 +199,10 @@ namespace TissueContact
       mutable bool                  have_candidates = false;
       /** The candidates that passed pair_rejected() in the last evaluation
        * that tested them all: survivors[i] indexes those of
-       * surface_triangles[i]
-       * in the list, in the list's order, at the positions
-       * x_at_survivors. The residual and tangent and the sparsity check
-       * that follow a line search's energy at the same positions visit only
-       * these (doc/theory/05-contact.md, sec. 2.1). */
+       * surface_triangles[i] in the list, in the list's order, at the
+       * positions x_at_survivors. The residual and tangent and the sparsity
+       * check that follow a line search's energy at the same positions visit
+       * only these (doc/theory/05-contact.md, sec. 2.1). */
       mutable std::vector<std::vector<unsigned int>> survivors;
       mutable std::vector<Point<3>>                  x_at_survivors;
       mutable bool                                   have_survivors = false;
@@ -378,15 +377,14 @@ namespace TissueContact
        * it, are left out: they would widen the pattern of every contact
        * surface by its neighbourhood without ever touching it. Whatever
        * this leaves out and later gains energy is caught by
-       * has_couplings(), which has the pattern rebuilt. @p tet_frame and
-       * @p tri_frame are the tetrahedron's and the triangle's at @p x. */
+       * has_couplings(), which has the pattern rebuilt. @p tri_frame is the
+       * triangle's at @p x. */
       bool
       may_gain_energy(const std::vector<Point<3>> &x,
                       const unsigned int           t,
                       const unsigned int           k,
                       const BodyContact           &p,
                       const double                 margin,
-                      const TetrahedronFrame      &tet_frame,
                       const TriangleFrame         &tri_frame) const;
 
       std::array<types::global_dof_index, 21>

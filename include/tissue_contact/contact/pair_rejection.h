@@ -34,7 +34,10 @@ namespace TissueContact
 
       TetrahedronFrame() = default;
 
-      explicit TetrahedronFrame(const std::array<Point<3>, 4> &tet)
+      /** The frame of @p tet; its barycentric part only if
+       * @p with_barycentric (else make_barycentric() adds it). */
+      explicit TetrahedronFrame(const std::array<Point<3>, 4> &tet,
+                                const bool with_barycentric = true)
         : lo(tet[0])
         , hi(tet[0])
         , vertices(tet)
@@ -45,8 +48,15 @@ namespace TissueContact
               lo[d] = std::min(lo[d], tet[j][d]);
               hi[d] = std::max(hi[d], tet[j][d]);
             }
-        const Tensor<1, 3> e1 = tet[1] - tet[0], e2 = tet[2] - tet[0],
-                           e3   = tet[3] - tet[0];
+        if (with_barycentric)
+          make_barycentric();
+      }
+
+      void
+      make_barycentric()
+      {
+        const auto        &v  = vertices;
+        const Tensor<1, 3> e1 = v[1] - v[0], e2 = v[2] - v[0], e3 = v[3] - v[0];
         const Tensor<1, 3> n1   = cross_product_3d(e2, e3),
                            n2   = cross_product_3d(e3, e1),
                            n3   = cross_product_3d(e1, e2);
@@ -99,6 +109,26 @@ namespace TissueContact
       }
     };
 
+    /** The first test of pair_rejected(): the boxes are apart by more than
+     * 1e-6 of the tetrahedron's size (the clipping could not find a point
+     * within roundoff of both), for a pair without a shared vertex (boxes
+     * with a common vertex always overlap). Reads only the frame's box. */
+    inline bool
+    boxes_apart(const std::array<unsigned char, 3> &shared,
+                const TetrahedronFrame             &tet,
+                const TriangleFrame                &tri_frame)
+    {
+      if (shared[0] < 4 || shared[1] < 4 || shared[2] < 4)
+        return false;
+      const double gap = 1e-6 * (tet.hi[0] - tet.lo[0] + tet.hi[1] - tet.lo[1] +
+                                 tet.hi[2] - tet.lo[2]);
+      for (unsigned int d = 0; d < 3; ++d)
+        if (tri_frame.lo[d] > tet.hi[d] + gap ||
+            tri_frame.hi[d] < tet.lo[d] - gap)
+          return true;
+      return false;
+    }
+
     /**
      * Whether a (triangle, tetrahedron) pair certainly has zero energy near
      * these positions, tested before the clipping (doc/theory/05-contact.md,
@@ -126,18 +156,8 @@ namespace TissueContact
                   const TriangleFrame                &tri_frame,
                   const std::array<Point<3>, 3>      &tri)
     {
-      const bool touching = shared[0] < 4 || shared[1] < 4 || shared[2] < 4;
-      // boxes apart by more than 1e-6 of the tetrahedron's size: the
-      // clipping could not find a point within roundoff of both
-      if (!touching)
-        {
-          const double gap = 1e-6 * (tet.hi[0] - tet.lo[0] + tet.hi[1] -
-                                     tet.lo[1] + tet.hi[2] - tet.lo[2]);
-          for (unsigned int d = 0; d < 3; ++d)
-            if (tri_frame.lo[d] > tet.hi[d] + gap ||
-                tri_frame.hi[d] < tet.lo[d] - gap)
-              return true;
-        }
+      if (boxes_apart(shared, tet, tri_frame))
+        return true;
       if (tet.degenerate)
         return false;
       std::array<bool, 4> separates{{true, true, true, true}};
@@ -170,6 +190,26 @@ namespace TissueContact
           below = below && d < -tri_frame.limit;
         }
       return above || below;
+    }
+
+    /**
+     * pair_rejected() for a single pair whose tetrahedron has no frame
+     * made: the box test first, the barycentric frame only if the boxes do
+     * not already reject (as the tests were before the frames; a pattern
+     * build meets its candidates in the tree walk's order, where no frame
+     * can be fetched ahead).
+     */
+    inline bool
+    pair_rejected(const std::array<unsigned char, 3> &shared,
+                  const std::array<Point<3>, 4>      &tet,
+                  const TriangleFrame                &tri_frame,
+                  const std::array<Point<3>, 3>      &tri)
+    {
+      TetrahedronFrame frame(tet, false);
+      if (boxes_apart(shared, frame, tri_frame))
+        return true;
+      frame.make_barycentric();
+      return pair_rejected(shared, frame, tri_frame, tri);
     }
   } // namespace Contact
 } // namespace TissueContact
