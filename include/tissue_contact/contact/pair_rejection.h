@@ -52,6 +52,8 @@ namespace TissueContact
           make_barycentric();
       }
 
+      /** The barycentric frame @f$m_i@f$ from the vertices, and whether
+       * the tetrahedron is degenerate. */
       void
       make_barycentric()
       {
