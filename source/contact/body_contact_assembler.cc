@@ -335,17 +335,15 @@ namespace TissueContact
       have_with_energy = false;
       survivors.resize(surface_triangles.size());
       with_energy.resize(surface_triangles.size());
-      make_frames(x, frames);
+      make_frames(x);
       return false;
     }
 
 
     void
-    BodyContactAssembler::make_frames(
-      const std::vector<Point<3>>   &x,
-      std::vector<TetrahedronFrame> &tet_frames) const
+    BodyContactAssembler::make_frames(const std::vector<Point<3>> &x) const
     {
-      tet_frames.resize(tets.size());
+      frames.resize(tets.size());
       parallel::apply_to_subranges(
         0u,
         static_cast<unsigned int>(tets.size()),
@@ -353,8 +351,8 @@ namespace TissueContact
           for (unsigned int k = begin; k < end; ++k)
             {
               const auto &kv = tets[k];
-              tet_frames[k]  = TetrahedronFrame(std::array<Point<3>, 4>{
-                 {x[kv[0]], x[kv[1]], x[kv[2]], x[kv[3]]}});
+              frames[k]      = TetrahedronFrame(std::array<Point<3>, 4>{
+                     {x[kv[0]], x[kv[1]], x[kv[2]], x[kv[3]]}});
             }
         },
         1024);

@@ -363,10 +363,9 @@ namespace TissueContact
                     const unsigned int           k) const;
 
       /** Each tetrahedron's rejection frame at the positions @p x, into
-       * @p tet_frames (sized to the tetrahedra), in parallel. */
+       * frames, in parallel. */
       void
-      make_frames(const std::vector<Point<3>>   &x,
-                  std::vector<TetrahedronFrame> &tet_frames) const;
+      make_frames(const std::vector<Point<3>> &x) const;
 
       /** Whether the candidate pair (triangle t, tetrahedron k) at the
        * positions @p x is coupled in the matrix pattern: it has energy now,

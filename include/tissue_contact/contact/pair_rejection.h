@@ -1,9 +1,9 @@
 #pragma once
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -26,7 +26,7 @@ namespace TissueContact
      */
     struct TetrahedronFrame
     {
-      Point<3>                    lo, hi;
+      BoundingBox<3>              box;
       std::array<Point<3>, 4>     vertices;
       std::array<Tensor<1, 3>, 3> m;
       /** zero or non-finite volume: no frame, left to the clipping */
@@ -38,16 +38,9 @@ namespace TissueContact
        * @p with_barycentric (else make_barycentric() adds it). */
       explicit TetrahedronFrame(const std::array<Point<3>, 4> &tet,
                                 const bool with_barycentric = true)
-        : lo(tet[0])
-        , hi(tet[0])
+        : box(tet)
         , vertices(tet)
       {
-        for (unsigned int j = 1; j < 4; ++j)
-          for (unsigned int d = 0; d < 3; ++d)
-            {
-              lo[d] = std::min(lo[d], tet[j][d]);
-              hi[d] = std::max(hi[d], tet[j][d]);
-            }
         if (with_barycentric)
           make_barycentric();
       }
@@ -91,24 +84,16 @@ namespace TissueContact
      */
     struct TriangleFrame
     {
-      Point<3>     lo, hi;
-      Tensor<1, 3> normal;
-      double       n, limit;
+      BoundingBox<3> box;
+      Tensor<1, 3>   normal;
+      double         n, limit;
 
       explicit TriangleFrame(const std::array<Point<3>, 3> &tri)
-        : lo(tri[0])
-        , hi(tri[0])
+        : box(tri)
         , normal(cross_product_3d(tri[1] - tri[0], tri[2] - tri[0]))
         , n(normal.norm())
         , limit(1e-6 * std::sqrt(n))
-      {
-        for (unsigned int a = 1; a < 3; ++a)
-          for (unsigned int d = 0; d < 3; ++d)
-            {
-              lo[d] = std::min(lo[d], tri[a][d]);
-              hi[d] = std::max(hi[d], tri[a][d]);
-            }
-      }
+      {}
     };
 
     /** The first test of pair_rejected(): the boxes are apart by more than
@@ -122,11 +107,11 @@ namespace TissueContact
     {
       if (shared[0] < 4 || shared[1] < 4 || shared[2] < 4)
         return false;
-      const double gap = 1e-6 * (tet.hi[0] - tet.lo[0] + tet.hi[1] - tet.lo[1] +
-                                 tet.hi[2] - tet.lo[2]);
+      const auto &[lo, hi]         = tet.box.get_boundary_points();
+      const auto &[tri_lo, tri_hi] = tri_frame.box.get_boundary_points();
+      const double gap = 1e-6 * (hi[0] - lo[0] + hi[1] - lo[1] + hi[2] - lo[2]);
       for (unsigned int d = 0; d < 3; ++d)
-        if (tri_frame.lo[d] > tet.hi[d] + gap ||
-            tri_frame.hi[d] < tet.lo[d] - gap)
+        if (tri_lo[d] > hi[d] + gap || tri_hi[d] < lo[d] - gap)
           return true;
       return false;
     }
