@@ -100,10 +100,11 @@ namespace TissueContact
     void
     ContactAssembler::add_couplings(const Vector<double> &u,
                                     const double          margin,
-                                    PatternRows          &rows) const
+                                    PatternRows          &rows,
+                                    const bool            where_missing) const
     {
       for (const auto *i : interactions)
-        i->add_couplings(u, margin, rows);
+        i->add_couplings(u, margin, rows, where_missing);
     }
 
 

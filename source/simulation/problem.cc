@@ -164,8 +164,13 @@ namespace TissueContact
               while (!row.empty() && row.back() >= rows.size())
                 row.pop_back();
           }
+        // the rows kept hold the couplings found at the builds before, and
+        // only those near the ones found missing are searched for
         if (body_contact)
-          contact->add_couplings(fe_displacement(u), coupling_margin, rows);
+          contact->add_couplings(fe_displacement(u),
+                                 coupling_margin,
+                                 rows,
+                                 keep_couplings);
         if (rigid)
           rigid->add_couplings(rows);
         to_pattern(rows, sparsity);

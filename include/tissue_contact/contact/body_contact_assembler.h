@@ -67,11 +67,17 @@ namespace TissueContact
 
       /** The DoF couplings of every (triangle, tetrahedron) candidate at
        * @p u whose boxes overlap after the triangle's box is enlarged by
-       * @p margin. */
+       * @p margin and that may gain energy there (may_gain_energy()). With
+       * @p where_missing, only the candidates of the triangles that the
+       * last has_couplings() found with a coupling missing, and of the
+       * triangles that share a vertex with one of them: the other
+       * triangles' pairs with energy are coupled in @p rows already
+       * (doc/theory/05-contact.md, sec. 7). */
       void
       add_couplings(const Vector<double> &u,
                     const double          margin,
-                    PatternRows          &rows) const override;
+                    PatternRows          &rows,
+                    const bool            where_missing = false) const override;
 
       /** Per declared pair: the force on its surface body (the triangle
        * vertices' share of @f$-\partial W/\partial x@f$), the area of its
@@ -84,7 +90,8 @@ namespace TissueContact
               std::vector<double>       &penetration) const override;
 
       /** Whether @p pattern holds the couplings of every pair with nonzero
-       * energy at @p u. */
+       * energy at @p u; which triangles lack some is kept for
+       * add_couplings(). */
       bool
       has_couplings(const Vector<double>  &u,
                     const SparsityPattern &pattern) const override;
@@ -219,6 +226,9 @@ namespace TissueContact
        * their energies again (doc/theory/05-contact.md, sec. 2.1). */
       mutable std::vector<std::vector<unsigned int>> with_energy;
       mutable bool                                   have_with_energy = false;
+      /** Whether surface_triangles[i] had a pair with energy whose
+       * couplings the pattern lacked, as the last has_couplings() found. */
+      mutable std::vector<unsigned char> missing_couplings;
       /** The triangles of the surface bodies of the pairs. */
       std::vector<unsigned int> surface_triangles;
       /** The list's margin m: a tenth of the mean tetrahedron box

@@ -46,7 +46,8 @@ namespace TissueContact
       void
       add_couplings(const Vector<double> &u,
                     const double          margin,
-                    PatternRows          &rows) const override;
+                    PatternRows          &rows,
+                    const bool            where_missing = false) const override;
 
       bool
       has_couplings(const Vector<double>  &u,

@@ -71,15 +71,20 @@ namespace TissueContact
               std::vector<double>       &penetration) const = 0;
 
       /** Add to @p rows (one per DoF) the couplings the tangent may have at
-       * @p u (with a search margin @p margin); none by default. */
+       * @p u (with a search margin @p margin); none by default. With
+       * @p where_missing, @p rows already hold the pattern that the last
+       * has_couplings(), at the same @p u, found incomplete, and only the
+       * couplings near what it found missing need adding. */
       virtual void
       add_couplings(const Vector<double> &u,
                     const double          margin,
-                    PatternRows          &rows) const
+                    PatternRows          &rows,
+                    const bool            where_missing = false) const
       {
         (void)u;
         (void)margin;
         (void)rows;
+        (void)where_missing;
       }
 
       /** Whether @p pattern holds every coupling the tangent has at @p u. */

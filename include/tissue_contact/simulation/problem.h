@@ -226,7 +226,8 @@ namespace TissueContact
     /** sparsity = the FE pattern + the contact couplings at @p u (with a
      * margin of half the smallest cell diameter, so that nearby pairs do
      * not force a rebuild at every iteration); with @p keep_couplings
-     * the current pattern's couplings stay in it too. */
+     * the current pattern's couplings stay in it too, and only those near
+     * the ones the sparsity check found missing are searched for. */
     void
                  rebuild_sparsity_pattern(const Vector<double> &u,
                                           const bool            keep_couplings = false);
