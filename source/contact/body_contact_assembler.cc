@@ -163,14 +163,22 @@ namespace TissueContact
       if (!search_all)
         for (const unsigned int k : moved_tets)
           tet_moved[k] = true;
+      // the new list written into the memory of the one before the current
+      // one, reserved at the current one's size and an eighth more: on the
+      // full knee's first 8 increments (some 300 000 candidates, 5 MB) a
+      // list grown anew at every update, by the serial appends below, made
+      // the updates about 15 % slower
+      std::swap(previous_candidates, candidates);
+      std::swap(previous_offsets, offsets);
+      const std::vector<Candidate>    &old_candidates = previous_candidates;
+      const std::vector<unsigned int> &old_offsets    = previous_offsets;
+      candidates.clear();
+      candidates.reserve(old_candidates.size() + old_candidates.size() / 8);
+      offsets.assign(1, 0);
+      offsets.reserve(old_offsets.size());
       // the triangles in parallel (the trees are only read), each list
       // sorted by tetrahedron and pair: the same list whichever way it was
       // found, so the sums over it are too
-      std::vector<Candidate>    old_candidates;
-      std::vector<unsigned int> old_offsets;
-      std::swap(old_candidates, candidates);
-      std::swap(old_offsets, offsets);
-      offsets.assign(1, 0);
       per_surface_triangle(
         [&](const unsigned int i, std::vector<Candidate> &found) {
           found.clear();

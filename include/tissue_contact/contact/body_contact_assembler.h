@@ -199,6 +199,10 @@ namespace TissueContact
        * by tetrahedron and pair (the order of the sums). */
       mutable std::vector<Candidate>    candidates;
       mutable std::vector<unsigned int> offsets;
+      /** The list before the last update (read while the new one is
+       * made), kept with its memory for the next update to write into. */
+      mutable std::vector<Candidate>    previous_candidates;
+      mutable std::vector<unsigned int> previous_offsets;
       /** Each vertex's position when the pairs it belongs to were last
        * searched for: the list holds every pair whose boxes at these
        * positions overlap once the triangle's is enlarged by the margin. */
