@@ -6,10 +6,15 @@
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
-#include <deal.II/lac/trilinos_precondition.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <Amesos_BaseSolver.h>
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_LinearProblem.h>
+#include <Epetra_Map.h>
+#include <Epetra_MpiComm.h>
+
+#include <memory>
 #include <vector>
 
 namespace TissueContact
@@ -19,40 +24,44 @@ namespace TissueContact
     using namespace dealii;
 
     /**
-     * One V-cycle of aggregation algebraic multigrid whose finest level
+     * One V-cycle of aggregation algebraic multigrid whose every level
      * runs on deal.II's threads (doc/theory/04-solver.md sec. 4.5.2).
      *
-     * Trilinos ML builds the hierarchy (aggregates, prolongators, coarse
-     * operators and their Chebyshev smoothers) from a copy of the matrix
-     * @f$A@f$ without its stored zeros (most of a contact tangent's
-     * entries), but is told to do nothing on the finest level; there
-     * deal.II's Chebyshev smoother @f$S@f$ (degree 2, Jacobi-scaled, as
-     * ML's own) and the residual run on the project's copy of the nonzeros
-     * (NonzeroMatrix), whose products use the threads. With @f$C@f$ the coarse
-     * correction ML applies
-     * (@f$C r = P\,M_c^{-1} R\,r@f$, the cycle below the finest level):
+     * Trilinos ML builds the hierarchy (aggregates, prolongators and the
+     * Galerkin coarse operators) from a copy of the matrix @f$A@f$ without
+     * its stored zeros (most of a contact tangent's entries); the cycle
+     * then runs on the project's copies of its operators, read out of ML
+     * once per hierarchy, because ML's own cycle is serial here (Epetra
+     * without OpenMP). On level @f$l@f$, with @f$A_l@f$ its operator
+     * (@f$A_0 = A@f$), @f$P_l@f$ the prolongator from level @f$l@f$ to
+     * level @f$l-1@f$, @f$R_l = P_l^T@f$ (ML's restriction), and
+     * @f$S_l@f$ deal.II's Chebyshev smoother (degree 2, Jacobi-scaled, as
+     * ML's own), the correction of level @f$l-1@f$ by the levels below it
+     * is @f$C_l r = P_l\,V_l(R_l r)@f$, where on the coarsest level
+     * @f$V_l = A_l^{-1}@f$ (a sparse direct factorization, as ML's KLU)
+     * and above it
      * @f[
-     *   x_1 = S\,b, \qquad x_2 = x_1 + C\,(b - A x_1), \qquad
-     *   x = x_2 + S\,(b - A x_2),
+     *   x_1 = S_l\,b, \qquad x_2 = x_1 + C_{l+1}(b - A_l x_1), \qquad
+     *   V_l b = x_2 + S_l\,(b - A_l x_2);
      * @f]
-     * the same cycle ML runs with its own finest-level smoother, which is
-     * serial here (Epetra without OpenMP). The operator is fixed between
-     * initialize() calls (it uses the copy, not later matrices), so a
-     * Krylov method may keep it across systems.
+     * the preconditioner is @f$V_0@f$. This is the V-cycle ML runs, with
+     * every product, smoothing step and transfer on the threads. The
+     * operator is fixed between initialize() calls (it uses the copies,
+     * not later matrices), so a Krylov method may keep it across systems.
      */
     class AMGPreconditioner
     {
     public:
       /** Build the hierarchy of @p A (copied without its stored zeros)
-       * with the project's ML settings (Chebyshev, 2 sweeps, aggregation
-       * threshold 1e-4, the elliptic defaults) and the near-null space @p
-       * null_space, @p null_space_dimension vectors of A.m() entries one
-       * after the other (none: ML's default). With @p smoothed_aggregation
-       * the prolongators are the tentative ones smoothed by damped Jacobi
-       * (ML's default, damping factor 4/3); without, the tentative ones as
-       * they are (plain aggregation: sparser coarse operators, a cheaper
-       * setup and cycle, more iterations; doc/theory/04-solver.md
-       * sec. 4.5.2). */
+       * with the project's ML settings (aggregation threshold 1e-4, the
+       * elliptic defaults) and the near-null space @p null_space,
+       * @p null_space_dimension vectors of A.m() entries one after the
+       * other (none: ML's default), and the smoothers of its levels. With
+       * @p smoothed_aggregation the prolongators are the tentative ones
+       * smoothed by damped Jacobi (ML's default, damping factor 4/3);
+       * without, the tentative ones as they are (plain aggregation: sparser
+       * coarse operators, a cheaper setup and cycle, more iterations;
+       * doc/theory/04-solver.md sec. 4.5.2). */
       void
       initialize(const SparseMatrix<double> &A,
                  const std::vector<double>  &null_space,
@@ -67,23 +76,55 @@ namespace TissueContact
       types::global_dof_index
       m() const
       {
-        return finest.m();
+        return levels.empty() ? 0 : levels[0]->A.m();
+      }
+
+      /** Levels of the hierarchy, the finest included. */
+      unsigned int
+      n_levels() const
+      {
+        return levels.size();
       }
 
     private:
-      /** The finest level's operator: the nonzeros of A in groups of three
-       * rows, whose products are those of A to the last bit in about two
-       * thirds of the time (0.27-0.29 against 0.41-0.44 ms on a tangent of
-       * the full knee, one thread; base/nonzero_matrix.h). */
-      NonzeroMatrix finest;
-      /** ML's copy of the matrix (its hierarchy keeps a reference). */
-      TrilinosWrappers::SparseMatrix    ml_matrix;
-      TrilinosWrappers::PreconditionAMG coarse_levels;
       using Smoother = PreconditionChebyshev<NonzeroMatrix,
                                              Vector<double>,
                                              DiagonalMatrix<Vector<double>>>;
-      Smoother               smoother;
-      mutable Vector<double> residual, correction;
+
+      /** A level of the hierarchy: its operator's nonzeros in groups of
+       * three rows (base/nonzero_matrix.h), and, below the finest, the
+       * transfers from and to the level above; on the coarsest level,
+       * instead of a smoother, its sparse LU factorization by KLU
+       * (Amesos), ML's own coarse solver. */
+      struct Level
+      {
+        NonzeroMatrix                         A;
+        SparsityPattern                       P_pattern, R_pattern;
+        SparseMatrix<double>                  P, R;
+        Smoother                              smoother;
+        std::unique_ptr<Epetra_MpiComm>       comm;
+        std::unique_ptr<Epetra_Map>           map;
+        std::unique_ptr<Epetra_CrsMatrix>     matrix;
+        std::unique_ptr<Epetra_LinearProblem> problem;
+        std::unique_ptr<Amesos_BaseSolver>    direct;
+        /** the level's right-hand side, iterate, residual and the
+         * correction from below */
+        mutable Vector<double> b, x, residual, correction;
+      };
+
+      /** @p x = A_l^{-1} @p b on the coarsest level @p level. */
+      static void
+      solve_coarsest(const Level          &level,
+                     Vector<double>       &x,
+                     const Vector<double> &b);
+
+      /** @p x = V_l @p b on level @p l. */
+      void
+      cycle(const unsigned int    l,
+            Vector<double>       &x,
+            const Vector<double> &b) const;
+
+      std::vector<std::unique_ptr<Level>> levels;
     };
   } // namespace Solvers
 } // namespace TissueContact

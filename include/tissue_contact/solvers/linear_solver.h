@@ -28,8 +28,8 @@ namespace TissueContact
      * - "GMRES+AMG": GMRES preconditioned by Trilinos ML aggregation
      *   algebraic multigrid (plain or smoothed aggregation) with the three
      *   translations, or the six rigid-body modes (translations and
-     *   rotations), as its near-null space; the cycle's finest level runs
-     *   on deal.II's threads (AMGPreconditioner).
+     *   rotations), as its near-null space; ML builds the hierarchy, the
+     *   cycle runs on deal.II's threads (AMGPreconditioner).
      * Reaching the iteration cap is not an error (inexact Newton); a
      * non-finite solution is.
      */
