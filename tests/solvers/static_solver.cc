@@ -764,20 +764,31 @@ namespace
   void
   threaded_amg()
   {
-    const Laplacian      laplacian(60);
-    const unsigned int   n = laplacian.n;
-    SparseMatrix<double> A = laplacian(10.);
-    Vector<double>       b(n), x(n);
-    for (unsigned int k = 0; k < n; ++k)
-      b[k] = std::sin(0.37 * k) + 0.5;
-    const auto gmres_iterations = [&](const auto &P) {
+    // the right-hand side of n rows, and GMRES's iterations to 1e-8 from
+    // zero on M x = r, right-preconditioned by P
+    const auto rhs = [](const unsigned int n) {
+      Vector<double> r(n);
+      for (unsigned int k = 0; k < n; ++k)
+        r[k] = std::sin(0.37 * k) + 0.5;
+      return r;
+    };
+    const auto iterations = [](const SparseMatrix<double> &M,
+                               const Vector<double>       &r,
+                               const auto                 &P) {
       ReductionControl control(500, 1e-300, 1e-8, false, false);
       SolverGMRES<Vector<double>>::AdditionalData data;
       data.right_preconditioning = true;
       SolverGMRES<Vector<double>> gmres(control, data);
-      x = 0.;
-      gmres.solve(A, x, b, P);
+      Vector<double>              y(r.size());
+      gmres.solve(M, y, r, P);
       return control.last_step();
+    };
+    const Laplacian      laplacian(60);
+    const unsigned int   n                = laplacian.n;
+    SparseMatrix<double> A                = laplacian(10.);
+    const Vector<double> b                = rhs(n);
+    const auto           gmres_iterations = [&](const auto &P) {
+      return iterations(A, b, P);
     };
     Solvers::AMGPreconditioner threaded;
     threaded.initialize(A, {}, 0, true);
@@ -837,24 +848,13 @@ namespace
     // coarsening below 2 000 rows): the 160 x 160 Laplacian
     const Laplacian            large(160);
     const SparseMatrix<double> L = large(10.);
-    Vector<double>             c(large.n), z(large.n);
-    for (unsigned int k = 0; k < large.n; ++k)
-      c[k] = std::sin(0.37 * k) + 0.5;
-    const auto iterations = [&](const auto &P) {
-      ReductionControl control(500, 1e-300, 1e-8, false, false);
-      SolverGMRES<Vector<double>>::AdditionalData data;
-      data.right_preconditioning = true;
-      SolverGMRES<Vector<double>> gmres(control, data);
-      z = 0.;
-      gmres.solve(L, z, c, P);
-      return control.last_step();
-    };
+    const Vector<double>       c = rhs(large.n);
     Solvers::AMGPreconditioner three;
     three.initialize(L, {}, 0, true);
     TrilinosWrappers::PreconditionAMG ml_three;
     ml_three.initialize(L, ml_data);
-    const unsigned int n_three    = iterations(three),
-                       n_ml_three = iterations(ml_three);
+    const unsigned int n_three    = iterations(L, c, three),
+                       n_ml_three = iterations(L, c, ml_three);
     deallog << "on the 160 x 160 Laplacian: levels " << three.n_levels()
             << ", GMRES iterations to 1e-8 " << n_three << ", ML's own cycle "
             << n_ml_three
@@ -866,19 +866,11 @@ namespace
     // one or two iterations
     const Laplacian            small(30);
     const SparseMatrix<double> S = small(10.);
-    Vector<double>             d(small.n), w(small.n);
-    for (unsigned int k = 0; k < small.n; ++k)
-      d[k] = std::sin(0.37 * k) + 0.5;
     Solvers::AMGPreconditioner one;
     one.initialize(S, {}, 0, true);
-    ReductionControl control(500, 1e-300, 1e-8, false, false);
-    SolverGMRES<Vector<double>>::AdditionalData data;
-    data.right_preconditioning = true;
-    SolverGMRES<Vector<double>> gmres(control, data);
-    gmres.solve(S, w, d, one);
+    const unsigned int n_one = iterations(S, rhs(small.n), one);
     deallog << "on the 30 x 30 Laplacian: levels " << one.n_levels()
-            << ", GMRES iterations to 1e-8 " << control.last_step()
-            << std::endl;
+            << ", GMRES iterations to 1e-8 " << n_one << std::endl;
   }
 
   // GMRES's operator and the AMG cycle's finest level, the tangent's
