@@ -414,6 +414,13 @@ namespace TissueContact
        * order, from evaluate_pairs() until they are added. */
       mutable std::vector<std::vector<PairResult>> pair_results;
 
+      /** Boundaries 0 = b_0 <= ... <= b_n = @p n_rows of @p n_parts ranges
+       * of rows with about equal shares of pair_results' rows: part p adds
+       * the rows b_p ... b_{p+1} - 1. */
+      std::vector<types::global_dof_index>
+      balanced_row_ranges(const types::global_dof_index n_rows,
+                          const unsigned int            n_parts) const;
+
       /** Add the gradient and (if @p K) Hessian of @p r to the rows lo ..
        * hi - 1 of @p R and @p K. */
       void
