@@ -243,8 +243,10 @@ namespace TissueContact
        * decade, summed over its solves. */
       mutable double excess = 0.;
       /** A hierarchy's setup in GMRES iterations: 0.21 s against 4.1 ms
-       * per iteration on the full knee, two threads (doc/theory/
-       * 04-solver.md sec. 4.5.1). */
+       * per iteration on the full knee, two threads, when it was set; 70 ms
+       * against 2.15 ms (33) with the cycle on the threads, where 33 gained
+       * nothing beyond the Newton paths' spread (doc/theory/04-solver.md
+       * sec. 4.5.1). */
       static constexpr double setup_cost         = 50.;
       mutable unsigned int    n_direct_fallbacks = 0;
     };
