@@ -534,8 +534,10 @@ namespace TissueContact
     {
       // a part's work is about the number of (pair, row) incidences in its
       // rows: ranges of equal row counts gave the first of two threads 60 %
-      // of them on the knee (contact sits where the numbering puts it) and
-      // two thirds of the insertion's time
+      // of them on the full knee's first 8 increments (contact sits where
+      // the numbering puts it) and two thirds of the insertion's time (the
+      // whole flexion gained nothing measurable; doc/theory/05-contact.md
+      // sec. 7)
       std::vector<std::size_t> incidences(n_rows + 1, 0);
       std::size_t              total = 0;
       for (const auto &results : pair_results)

@@ -415,7 +415,8 @@ namespace TissueContact
       mutable std::vector<std::vector<PairResult>> pair_results;
 
       /** Boundaries 0 = b_0 <= ... <= b_n = @p n_rows of @p n_parts ranges
-       * of rows with about equal shares of pair_results' rows: part p adds
+       * of rows with about equal shares of the (pair, row) incidences of
+       * pair_results: part p adds
        * the rows b_p ... b_{p+1} - 1. */
       std::vector<types::global_dof_index>
       balanced_row_ranges(const types::global_dof_index n_rows,
