@@ -416,8 +416,8 @@ namespace TissueContact
 
       /** Boundaries 0 = b_0 <= ... <= b_n = @p n_rows of @p n_parts ranges
        * of rows with about equal shares of the (pair, row) incidences of
-       * pair_results: part p adds
-       * the rows b_p ... b_{p+1} - 1. */
+       * pair_results: part p adds the rows b_p ... b_{p+1} - 1 (one part:
+       * all rows, without counting). */
       std::vector<types::global_dof_index>
       balanced_row_ranges(const types::global_dof_index n_rows,
                           const unsigned int            n_parts) const;
