@@ -14,7 +14,7 @@ time and linear-solve time, and over the runs their mean, standard
 deviation, the mean's standard error and the median. Weigh a
 path-changing rule by these, not by one run; on the coarse knee eight
 variants tell apart only rules some 10 % apart (doc/theory/04-solver.md
-sec. 4.3), so use more where the difference is smaller:
+sec. 4.5.1), so use more where the difference is smaller:
 
     cmake --build build --target tissue-contact
     /usr/bin/python3 tests/performance/path_spread.py [--quick] [--runs N]
