@@ -1,3 +1,4 @@
+#include <tissue_contact/base/row_ranges.h>
 #include <tissue_contact/base/timing.h>
 #include <tissue_contact/contact/body_contact_assembler.h>
 #include <tissue_contact/contact/contact_parameters.h>
@@ -512,7 +513,7 @@ namespace TissueContact
       const unsigned int n_parts =
         std::max(1u, std::min(MultithreadInfo::n_threads(), 64u));
       const std::vector<types::global_dof_index> bounds =
-        balanced_row_ranges(R.size(), n_parts);
+        insertion_row_ranges(R.size(), n_parts);
       parallel::apply_to_subranges(
         0u,
         n_parts,
@@ -528,7 +529,7 @@ namespace TissueContact
 
 
     std::vector<types::global_dof_index>
-    BodyContactAssembler::balanced_row_ranges(
+    BodyContactAssembler::insertion_row_ranges(
       const types::global_dof_index n_rows,
       const unsigned int            n_parts) const
     {
@@ -541,28 +542,14 @@ namespace TissueContact
       // whole flexion gained nothing measurable; doc/theory/05-contact.md
       // sec. 7)
       std::vector<std::size_t> incidences(n_rows + 1, 0);
-      std::size_t              total = 0;
       for (const auto &results : pair_results)
         for (const PairResult &r : results)
           for (const types::global_dof_index row : pair_dofs(r.t, r.k))
-            {
-              ++incidences[row + 1];
-              ++total;
-            }
+            ++incidences[row + 1];
       std::partial_sum(incidences.begin(),
                        incidences.end(),
                        incidences.begin());
-      std::vector<types::global_dof_index> bounds(n_parts + 1, n_rows);
-      bounds[0] = 0;
-      for (unsigned int part = 1; part < n_parts; ++part)
-        // the first row boundary with at least part / n_parts of the work
-        // before it
-        bounds[part] = static_cast<types::global_dof_index>(
-          std::lower_bound(incidences.begin(),
-                           incidences.end(),
-                           (total * part + n_parts - 1) / n_parts) -
-          incidences.begin());
-      return bounds;
+      return TissueContact::balanced_row_ranges(incidences, n_parts);
     }
 
 

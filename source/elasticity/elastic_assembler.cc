@@ -1,7 +1,9 @@
 #include <tissue_contact/base/polar_rotation.h>
+#include <tissue_contact/base/row_ranges.h>
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/materials/uncoupled_material.h>
 
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/parallel.h>
 #include <deal.II/base/work_stream.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -22,6 +24,13 @@ namespace TissueContact
     {
       using Materials::VoigtTangent;
 
+      /** The number of ranges the rows are split into: one per thread. */
+      unsigned int
+      n_row_parts()
+      {
+        return std::max(1u, std::min(MultithreadInfo::n_threads(), 64u));
+      }
+
       /** Per-thread work space of the cell kernel. */
       struct ScratchData
       {
@@ -36,6 +45,10 @@ namespace TissueContact
         // the kernel reads: kept here, not zeroed for every cell)
         Materials::MaterialResponse m;
         VoigtTangent                CC;
+        // whether this thread writes the cell's own outputs (dv_e/dx_b of
+        // a vertex-pressure element): a cell with unknowns in two threads'
+        // rows is computed by both, and written by one
+        bool primary = true;
       };
 
       struct CopyData
@@ -274,7 +287,8 @@ namespace TissueContact
       // the cells in the order of their lowest DoF where the DoFs are
       // numbered point by point in Cuthill-McKee order (Discretization):
       // cells that follow each other share rows of the tangent, and the
-      // serial scatter below finds them in the cache (doc/theory/02-weak-
+      // scatter below finds them in the cache; few cells then have unknowns
+      // in two threads' ranges of rows (row_split(); doc/theory/02-weak-
       // form-and-linearization.md sec. 2.3)
       if (disc.points_renumbered)
         {
@@ -297,6 +311,15 @@ namespace TissueContact
         }
       if (!deformable_cells.empty())
         element_size /= deformable_cells.size();
+      cell_dof_range.resize(n_cells);
+      for (unsigned int c = 0; c < n_cells; ++c)
+        {
+          const auto range =
+            std::minmax_element(&cell_dofs[c * n_local],
+                                &cell_dofs[c * n_local] + n_local);
+          cell_dof_range[c] = {{*range.first, *range.second}};
+        }
+      split = row_split(n_row_parts());
 
       if (!nodal_elements.empty())
         {
@@ -548,7 +571,7 @@ namespace TissueContact
                     add_pressure(nodal->element_pressure(vertex_state, k) * J,
                                  tau,
                                  K != nullptr ? &CC : nullptr);
-                    if (K != nullptr)
+                    if (K != nullptr && s.primary)
                       // dv_e/dx_b = V0_e cof(F) grad N_b   (N2)
                       for (unsigned int a = 0; a < 4; ++a)
                         dv[k][a] = (w * J) * s.n[a];
@@ -681,17 +704,19 @@ namespace TissueContact
               }
       };
 
-      double *const       values = by_position ? value_array(*K) : nullptr;
-      std::vector<double> row(n_local);
-      const auto          copier = [&](const CopyData &copy) {
-        if (!copy.valid)
-          {
-            valid = false;
-            return;
-          }
+      double *const values = by_position ? value_array(*K) : nullptr;
+      // add the rows lo .. hi - 1 of a cell's entries
+      const auto copier = [&](const CopyData               &copy,
+                              const types::global_dof_index lo,
+                              const types::global_dof_index hi,
+                              std::vector<double>          &row) {
         const types::global_dof_index *dofs = &cell_dofs[copy.cell * n_local];
+        const auto                     mine = [&](const unsigned int k) {
+          return dofs[k] >= lo && dofs[k] < hi;
+        };
         for (unsigned int k = 0; k < n_local; ++k)
-          R[dofs[k]] += copy.r[k];
+          if (mine(k))
+            R[dofs[k]] += copy.r[k];
         if (by_position)
           {
             const unsigned int *at =
@@ -707,9 +732,11 @@ namespace TissueContact
                 for (unsigned int a = 0; a < n_nodes; ++a)
                   for (unsigned int i = 0; i < 3; ++i)
                     {
-                      const unsigned int  row = 3 * a + i;
-                      const unsigned int *P   = np + row * per_row;
-                      const double       *kr  = k + row * n_local;
+                      const unsigned int row = 3 * a + i;
+                      if (!mine(row))
+                        continue;
+                      const unsigned int *P  = np + row * per_row;
+                      const double       *kr = k + row * n_local;
                       for (unsigned int b = 0; b < a; ++b)
                         for (unsigned int j = 0; j < 3; ++j)
                           values[P[b] + j] += k[(3 * b + j) * n_local + row];
@@ -727,6 +754,8 @@ namespace TissueContact
                 for (unsigned int i = 0; i < 3; ++i)
                   {
                     const unsigned int row = 3 * a + i;
+                    if (!mine(row))
+                      continue;
                     for (unsigned int b = 0; b < a; ++b)
                       for (unsigned int j = 0; j < 3; ++j)
                         values[at[row * n_local + 3 * b + j]] +=
@@ -735,8 +764,10 @@ namespace TissueContact
                       values[at[row * n_local + col]] += k[row * n_local + col];
                   }
             else
-              for (unsigned int ij = 0; ij < n_local * n_local; ++ij)
-                values[at[ij]] += k[ij];
+              for (unsigned int i = 0; i < n_local; ++i)
+                if (mine(i))
+                  for (unsigned int j = 0; j < n_local; ++j)
+                    values[at[i * n_local + j]] += k[i * n_local + j];
           }
         else if (K != nullptr)
           {
@@ -745,6 +776,8 @@ namespace TissueContact
             const unsigned char *local = &sorted_local[copy.cell * n_local];
             for (unsigned int i = 0; i < n_local; ++i)
               {
+                if (columns[i] < lo || columns[i] >= hi)
+                  continue;
                 for (unsigned int j = 0; j < n_local; ++j)
                   row[j] = copy.K(local[i], local[j]);
                 K->add(columns[i], n_local, columns, row.data(), false, true);
@@ -752,37 +785,120 @@ namespace TissueContact
           }
       };
 
-      // the cells in batches: one WorkStream item (and one copier call)
-      // per batch instead of per cell
-      constexpr unsigned int    batch = 16;
-      std::vector<unsigned int> batch_starts;
-      for (unsigned int k = 0; k < deformable_cells.size(); k += batch)
-        batch_starts.push_back(k);
-      WorkStream::run(
-        batch_starts.begin(),
-        batch_starts.end(),
-        [&](const std::vector<unsigned int>::const_iterator &start,
-            ScratchData                                     &s,
-            std::vector<CopyData>                           &copies) {
-          const unsigned int n =
-            std::min<unsigned int>(batch, deformable_cells.size() - *start);
-          copies.resize(n);
-          for (unsigned int k = 0; k < n; ++k)
-            worker(deformable_cells.cbegin() + *start + k, s, copies[k]);
-        },
-        [&](const std::vector<CopyData> &copies) {
-          for (const CopyData &copy : copies)
-            copier(copy);
-        },
-        ScratchData(),
-        std::vector<CopyData>(),
-        2 * MultithreadInfo::n_threads(),
-        4);
+      const unsigned int n_parts = n_row_parts();
+      const RowSplit     other =
+        split.n_parts == n_parts ? RowSplit() : row_split(n_parts);
+      const RowSplit &parts = split.n_parts == n_parts ? split : other;
+      if (parts.usable)
+        {
+          // each thread the cells with unknowns in its range of rows, in
+          // the cells' order, adding only to its rows: every entry of R
+          // and K receives the same additions in the same order as in the
+          // serial loop, on any number of threads (row_ranges.h). A cell
+          // with unknowns in two ranges is computed by both threads.
+          std::vector<char> part_valid(n_parts, 1);
+          parallel::apply_to_subranges(
+            0u,
+            n_parts,
+            [&](const unsigned int part_begin, const unsigned int part_end) {
+              ScratchData         s;
+              CopyData            copy;
+              std::vector<double> row(n_local);
+              for (unsigned int part = part_begin; part < part_end; ++part)
+                {
+                  const types::global_dof_index lo = parts.bounds[part],
+                                                hi = parts.bounds[part + 1];
+                  for (unsigned int k = 0; k < deformable_cells.size(); ++k)
+                    {
+                      const auto &range = cell_dof_range[deformable_cells[k]];
+                      if (range[1] < lo || range[0] >= hi)
+                        continue;
+                      s.primary = range[0] >= lo;
+                      worker(deformable_cells.cbegin() + k, s, copy);
+                      if (!copy.valid)
+                        {
+                          part_valid[part] = 0;
+                          break;
+                        }
+                      copier(copy, lo, hi, row);
+                    }
+                }
+            },
+            1);
+          valid = valid && std::find(part_valid.begin(), part_valid.end(), 0) ==
+                             part_valid.end();
+        }
+      else
+        {
+          // the cells in batches: one WorkStream item (and one copier call)
+          // per batch instead of per cell; the copier runs on one thread
+          constexpr unsigned int    batch = 16;
+          std::vector<unsigned int> batch_starts;
+          for (unsigned int k = 0; k < deformable_cells.size(); k += batch)
+            batch_starts.push_back(k);
+          std::vector<double> row(n_local);
+          WorkStream::run(
+            batch_starts.begin(),
+            batch_starts.end(),
+            [&](const std::vector<unsigned int>::const_iterator &start,
+                ScratchData                                     &s,
+                std::vector<CopyData>                           &copies) {
+              const unsigned int n =
+                std::min<unsigned int>(batch, deformable_cells.size() - *start);
+              copies.resize(n);
+              for (unsigned int k = 0; k < n; ++k)
+                worker(deformable_cells.cbegin() + *start + k, s, copies[k]);
+            },
+            [&](const std::vector<CopyData> &copies) {
+              for (const CopyData &copy : copies)
+                if (!copy.valid)
+                  valid = false;
+                else
+                  copier(copy, 0, disc.n_dofs(), row);
+            },
+            ScratchData(),
+            std::vector<CopyData>(),
+            2 * MultithreadInfo::n_threads(),
+            4);
+        }
       if (valid && K != nullptr && nodal)
         nodal->add_tangent(vertex_state, dv, *K);
       if (valid)
         R.add(-load_factor, f_ext);
       return valid;
+    }
+
+
+    bool
+    ElasticAssembler::splits_rows() const
+    {
+      const unsigned int n_parts = n_row_parts();
+      return n_parts > 1 &&
+             (split.n_parts == n_parts ? split.usable :
+                                         row_split(n_parts).usable);
+    }
+
+
+    ElasticAssembler::RowSplit
+    ElasticAssembler::row_split(const unsigned int n_parts) const
+    {
+      RowSplit split;
+      split.n_parts = n_parts;
+      std::vector<std::size_t> work(disc.n_dofs() + 1, 0);
+      for (const unsigned int c : deformable_cells)
+        for (unsigned int k = 0; k < n_local; ++k)
+          ++work[cell_dofs[c * n_local + k] + 1];
+      std::partial_sum(work.begin(), work.end(), work.begin());
+      split.bounds = balanced_row_ranges(work, n_parts);
+      // the cells each part computes: those with an unknown in its rows
+      std::size_t computed = 0;
+      for (const unsigned int c : deformable_cells)
+        for (unsigned int part = 0; part < n_parts; ++part)
+          if (cell_dof_range[c][1] >= split.bounds[part] &&
+              cell_dof_range[c][0] < split.bounds[part + 1])
+            ++computed;
+      split.usable = 4 * computed <= 5 * deformable_cells.size();
+      return split;
     }
 
 

@@ -2,16 +2,19 @@
 // traction: the assembled residual equals the finite-difference gradient of
 // the total potential energy, the assembled tangent equals the
 // finite-difference derivative of the residual and is symmetric, the total
-// external force equals rho g V + t A, and an inverted element is reported.
+// external force equals rho g V + t A, and an inverted element is reported;
+// on a renumbered mesh two threads assemble the same bits as one.
 
 #include "../tests.h"
 
 #include <tissue_contact/elasticity/elastic_assembler.h>
 #include <tissue_contact/materials/fiber_reinforcement.h>
 #include <tissue_contact/materials/mooney_rivlin.h>
+#include <tissue_contact/materials/uncoupled_material.h>
 #include <tissue_contact/materials/veronda.h>
 
 #include <deal.II/base/function_parser.h>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -179,6 +182,62 @@ check(const unsigned int degree)
           << error_bound(dK / K.linfty_norm()) << std::endl;
 }
 
+// the rows of R and K split among the threads (ElasticAssembler::
+// splits_rows(), doc/theory/02-weak-form-and-linearization.md sec. 2.3):
+// on a renumbered mesh, the residual and tangent on two threads are those
+// on one to the last bit, at precomputed positions and searched
+void
+check_threads()
+{
+  deallog << "=== threads" << std::endl;
+  Triangulation<3> tria;
+  GridGenerator::subdivided_hyper_rectangle_with_simplices(tria,
+                                                           {10, 10, 10},
+                                                           Point<3>(0, 0, 0),
+                                                           Point<3>(1, 1, 1));
+  GridTools::distort_random(0.2, tria, true, 7);
+  for (const auto &cell : tria.active_cell_iterators())
+    cell->set_material_id(cell->center()[0] > 0.5 ? 1 : 0);
+  // the second body's volume term at the vertices: the cells that two
+  // threads both compute write its element derivatives once
+  const Materials::MooneyRivlin        m0(5., 1., 50.);
+  const Materials::UncoupledNeoHookean m1(7., 100., false);
+  Discretization                       disc(tria, 1);
+  disc.renumber_by_points();
+  Elasticity::DeadLoads loads;
+  loads.gravity    = Tensor<1, 3>({0., 0., -2.});
+  using VolumeTerm = Elasticity::BodyData::VolumeTerm;
+  Elasticity::ElasticAssembler assembler(
+    disc,
+    {{0, {&m0, 3.}}, {1, {&m1, 1., true, VolumeTerm::nodal_average, 100.}}},
+    loads);
+  Vector<double> u(disc.n_dofs());
+  for (auto &v : u)
+    v = random_value(-0.005, 0.005);
+  for (const bool positions : {false, true})
+    {
+      if (positions)
+        assembler.use_matrix_pattern(assembler.sparsity_pattern());
+      Vector<double>       R1(disc.n_dofs()), R2(disc.n_dofs());
+      SparseMatrix<double> K1(assembler.sparsity_pattern()),
+        K2(assembler.sparsity_pattern());
+      MultithreadInfo::set_thread_limit(1);
+      const bool valid1 = assembler.assemble(u, 0.7, R1, &K1);
+      MultithreadInfo::set_thread_limit(2);
+      const bool split  = assembler.splits_rows();
+      const bool valid2 = assembler.assemble(u, 0.7, R2, &K2);
+      R2 -= R1;
+      K2.add(-1., K1);
+      deallog << (positions ? "at positions" : "searched") << ": valid "
+              << valid1 << " " << valid2 << ", rows split among 2 threads "
+              << split
+              << ", residual and tangent equal to one thread's to the last bit "
+              << (R2.linfty_norm() == 0. && K2.linfty_norm() == 0.)
+              << std::endl;
+    }
+  MultithreadInfo::set_thread_limit(1);
+}
+
 int
 main(int argc, char **argv)
 {
@@ -186,4 +245,5 @@ main(int argc, char **argv)
   initlog();
   check(1);
   check(2);
+  check_threads();
 }

@@ -419,8 +419,8 @@ namespace TissueContact
        * pair_results: part p adds the rows b_p ... b_{p+1} - 1 (one part:
        * all rows, without counting). */
       std::vector<types::global_dof_index>
-      balanced_row_ranges(const types::global_dof_index n_rows,
-                          const unsigned int            n_parts) const;
+      insertion_row_ranges(const types::global_dof_index n_rows,
+                           const unsigned int            n_parts) const;
 
       /** Add the gradient and (if @p K) Hessian of @p r to the rows lo ..
        * hi - 1 of @p R and @p K. */

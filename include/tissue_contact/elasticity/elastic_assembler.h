@@ -80,9 +80,11 @@ namespace TissueContact
      *    \partial_L N_b\,dV@f$ (@f$=K_c + K_\sigma@f$), and the total
      * potential energy
      * @f$\Pi(u,\lambda) = \int\Psi(F)\,dV - \lambda f^{\rm ext}\cdot u@f$,
-     * whose gradient the residual is. Assembly runs on all cores with
-     * WorkStream. Vectors and matrices are assembled without constraints;
-     * the solver imposes prescribed values. Bodies with
+     * whose gradient the residual is. Assembly runs on all cores: each
+     * thread adds the cells' entries in its own range of rows where few
+     * cells have unknowns in two ranges (splits_rows()), else WorkStream
+     * with one thread adding at a time. Vectors and matrices are assembled
+     * without constraints; the solver imposes prescribed values. Bodies with
      * BodyData::VolumeTerm::nodal_average have their volume term at the
      * vertices (NodalPressure, doc/theory/08-nodal-pressure.md): the
      * elements get the mean vertex pressure, the tangent the vertex
@@ -114,6 +116,16 @@ namespace TissueContact
                const double          load_factor,
                Vector<double>       &R,
                SparseMatrix<double> *K) const;
+
+      /**
+       * Whether assemble() splits the rows of R and K among the threads at
+       * the current thread count (each thread adds the cells' entries in
+       * its range of rows; the same sums to the last bit as on one thread,
+       * doc/theory/02-weak-form-and-linearization.md sec. 2.3), rather
+       * than adding every cell's entries on one thread at a time.
+       */
+      bool
+      splits_rows() const;
 
       /**
        * Find, once, where each cell's tangent entries lie in the value
@@ -244,6 +256,30 @@ namespace TissueContact
       // column after the diagonal for row i's own node), [.. + n_nodes] the
       // diagonal's; a third of the positions to read per cell
       std::vector<unsigned int> node_positions;
+
+      // per cell its lowest and highest unknown
+      std::vector<std::array<types::global_dof_index, 2>> cell_dof_range;
+
+      /**
+       * The rows of R and K split among threads (base/row_ranges.h): the
+       * bounds of @p n_parts ranges of rows with about equal numbers of
+       * (cell, row) incidences. A thread computes every cell with an
+       * unknown in its rows; not usable (assemble() then adds every cell
+       * on one thread) where that would compute more than 5/4 of the cells
+       * in all: where many cells have unknowns in several ranges.
+       */
+      struct RowSplit
+      {
+        unsigned int                         n_parts = 0;
+        bool                                 usable  = false;
+        std::vector<types::global_dof_index> bounds;
+      };
+
+      RowSplit
+      row_split(const unsigned int n_parts) const;
+
+      // the split for the thread count at construction
+      RowSplit split;
 
       // the volume term at the vertices: null if no body has it
       std::unique_ptr<NodalPressure> nodal;

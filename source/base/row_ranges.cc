@@ -1,0 +1,23 @@
+#include <tissue_contact/base/row_ranges.h>
+
+#include <algorithm>
+
+namespace TissueContact
+{
+  std::vector<types::global_dof_index>
+  balanced_row_ranges(const std::vector<std::size_t> &work,
+                      const unsigned int              n_parts)
+  {
+    const types::global_dof_index        n_rows = work.size() - 1;
+    std::vector<types::global_dof_index> bounds(n_parts + 1, n_rows);
+    bounds[0]               = 0;
+    const std::size_t total = work.back();
+    for (unsigned int part = 1; part < n_parts; ++part)
+      bounds[part] = static_cast<types::global_dof_index>(
+        std::lower_bound(work.begin(),
+                         work.end(),
+                         (total * part + n_parts - 1) / n_parts) -
+        work.begin());
+    return bounds;
+  }
+} // namespace TissueContact
