@@ -1,9 +1,18 @@
 #include <tissue_contact/base/row_ranges.h>
 
+#include <deal.II/base/multithread_info.h>
+
 #include <algorithm>
 
 namespace TissueContact
 {
+  unsigned int
+  n_row_ranges()
+  {
+    return std::max(1u, std::min(MultithreadInfo::n_threads(), 64u));
+  }
+
+
   std::vector<types::global_dof_index>
   balanced_row_ranges(const std::vector<std::size_t> &work,
                       const unsigned int              n_parts)

@@ -510,8 +510,7 @@ namespace TissueContact
       // same additions in the same order as in a serial loop (the same sums
       // to the last bit), and the rows' searches run on all threads (the
       // serial insertion was 7 % of the full knee's run on two threads)
-      const unsigned int n_parts =
-        std::max(1u, std::min(MultithreadInfo::n_threads(), 64u));
+      const unsigned int                         n_parts = n_row_ranges();
       const std::vector<types::global_dof_index> bounds =
         insertion_row_ranges(R.size(), n_parts);
       parallel::apply_to_subranges(

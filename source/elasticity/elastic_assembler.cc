@@ -24,13 +24,6 @@ namespace TissueContact
     {
       using Materials::VoigtTangent;
 
-      /** The number of ranges the rows are split into: one per thread. */
-      unsigned int
-      n_row_parts()
-      {
-        return std::max(1u, std::min(MultithreadInfo::n_threads(), 64u));
-      }
-
       /** Per-thread work space of the cell kernel. */
       struct ScratchData
       {
@@ -319,7 +312,7 @@ namespace TissueContact
                                 &cell_dofs[c * n_local] + n_local);
           cell_dof_range[c] = {{*range.first, *range.second}};
         }
-      split = row_split(n_row_parts());
+      split = row_split(n_row_ranges());
 
       if (!nodal_elements.empty())
         {
@@ -785,7 +778,7 @@ namespace TissueContact
           }
       };
 
-      const unsigned int n_parts = n_row_parts();
+      const unsigned int n_parts = n_row_ranges();
       const RowSplit     other =
         split.n_parts == n_parts ? RowSplit() : row_split(n_parts);
       const RowSplit &parts = split.n_parts == n_parts ? split : other;
@@ -872,7 +865,7 @@ namespace TissueContact
     bool
     ElasticAssembler::splits_rows() const
     {
-      const unsigned int n_parts = n_row_parts();
+      const unsigned int n_parts = n_row_ranges();
       return n_parts > 1 &&
              (split.n_parts == n_parts ? split.usable :
                                          row_split(n_parts).usable);
