@@ -867,12 +867,14 @@ namespace TissueContact
                 const unsigned int k,
                 const BodyContact &,
                 const PairGeometry &) {
-              // the couplings across (add_couplings())
+              // the couplings across (add_couplings()), in the
+              // tetrahedron's rows: the pattern is symmetric (add_couplings()
+              // couples both ways, and a pattern kept within an increment
+              // keeps both), so their transposes are there too
               const auto dofs = pair_dofs(t, k);
               for (unsigned int a = 0; a < 4 && has; ++a)
                 for (unsigned int b = 4; b < 7; ++b)
-                  has = has && pattern.exists(dofs[3 * a], dofs[3 * b]) &&
-                        pattern.exists(dofs[3 * b], dofs[3 * a]);
+                  has = has && pattern.exists(dofs[3 * a], dofs[3 * b]);
             });
           // each triangle's flag written by its worker alone
           missing_couplings[i] = !has;
