@@ -170,12 +170,41 @@ namespace TissueContact
       // elements', the contact pairs' and add_couplings()' are), so they
       // are the columns of the slaves' rows: on the full knee 3 150 of 29 706
       // rows (a sampling profile of its first 8 increments: condense() 3.1 %
-      // of the samples with the pass over all rows, 1.6 % without)
+      // of the samples with the pass over all rows, 1.6 % without). The
+      // rows are read and written in place: a square SparseMatrix stores
+      // row i's values from its diagonal on, in the pattern's order (its
+      // diagonal first, the other columns ascending), and each entry gets
+      // the additions SparseMatrix::add() would make, in the same order
+      // (zeros skipped, as add() skips them)
+      const SparsityPattern &pattern    = K->get_sparsity_pattern();
+      const auto             row_values = [&](const types::global_dof_index i) {
+        return &K->diag_element(i);
+      };
+      // the place of column j in row i: 0 for the diagonal, else found
+      // among the other columns, ascending; invalid if not stored
+      constexpr unsigned int missing  = numbers::invalid_unsigned_int;
+      const auto             place_of = [&](const types::global_dof_index i,
+                                const types::global_dof_index j) {
+        if (i == j)
+          return 0u;
+        unsigned int lo = 1, hi = pattern.row_length(i);
+        while (lo < hi)
+          {
+            const unsigned int mid = (lo + hi) / 2;
+            if (pattern.column_number(i, mid) < j)
+              lo = mid + 1;
+            else
+              hi = mid;
+          }
+        return lo < pattern.row_length(i) && pattern.column_number(i, lo) == j ?
+                             lo :
+                             missing;
+      };
       std::vector<bool> has_slave_column(K->m(), false);
       for (const auto &body_slaves : slaves)
         for (const auto s : body_slaves)
-          for (auto e = K->begin(s); e != K->end(s); ++e)
-            has_slave_column[e->column()] = true;
+          for (unsigned int k = 0; k < pattern.row_length(s); ++k)
+            has_slave_column[pattern.column_number(s, k)] = true;
       std::vector<types::global_dof_index> coupled_rows;
       for (types::global_dof_index i = 0; i < K->m(); ++i)
         if (has_slave_column[i])
@@ -194,56 +223,98 @@ namespace TissueContact
         std::size_t(0),
         coupled_rows.size(),
         [&](const std::size_t begin, const std::size_t end) {
+          // the places of each body's six columns in the row, found once
+          std::vector<std::array<unsigned int, 6>> body_places(bodies.size());
+          std::vector<bool>                        have_places(bodies.size());
           for (std::size_t r = begin; r < end; ++r)
-            for (auto e = K->begin(coupled_rows[r]);
-                 e != K->end(coupled_rows[r]);
-                 ++e)
-              {
-                const auto j = e->column();
-                if (j >= n_fe || owner[j] < 0 || e->value() == 0.)
-                  continue;
-                const double v = e->value();
-                e->value()     = 0.;
-                const auto &Js = J[owner[j]][slave_index[j]];
-                const auto  q  = first_unknown(owner[j]);
-                for (unsigned int m = 0; m < 6; ++m)
-                  if (Js[m] != 0.)
-                    K->add(coupled_rows[r], q + m, v * Js[m]);
-              }
+            {
+              const types::global_dof_index i      = coupled_rows[r];
+              double                       *values = row_values(i);
+              const unsigned int            length = pattern.row_length(i);
+              std::fill(have_places.begin(), have_places.end(), false);
+              for (unsigned int k = 0; k < length; ++k)
+                {
+                  const auto j = pattern.column_number(i, k);
+                  if (j >= n_fe || owner[j] < 0 || values[k] == 0.)
+                    continue;
+                  const double v = values[k];
+                  values[k]      = 0.;
+                  const auto &Js = J[owner[j]][slave_index[j]];
+                  auto       &at = body_places[owner[j]];
+                  if (!have_places[owner[j]])
+                    {
+                      const auto q = first_unknown(owner[j]);
+                      for (unsigned int m = 0; m < 6; ++m)
+                        at[m] = place_of(i, q + m);
+                      have_places[owner[j]] = true;
+                    }
+                  for (unsigned int m = 0; m < 6; ++m)
+                    if (Js[m] != 0.)
+                      {
+                        const double a = v * Js[m];
+                        AssertThrow(a == 0. || at[m] != missing,
+                                    ExcMessage(
+                                      "a rigid body's coupling is not in the "
+                                      "matrix's pattern"));
+                        if (a != 0.)
+                          values[at[m]] += a;
+                      }
+                }
+            }
         },
         64);
       // T^T (K T): every slave row moves to its body's rows, then becomes
       // the identity's. Each of a body's six rows gathers from all its
       // slaves' rows, in the slaves' order (the sums as if done one after
-      // the other): the bodies' rows in parallel, then the slaves' rows
+      // the other), each column's place in the body's row read from a map
+      // of the row: the bodies' rows in parallel, then the slaves' rows
       // cleared
       const unsigned int n_rows = 6 * bodies.size();
       parallel::apply_to_subranges(
         0u,
         n_rows,
         [&](const unsigned int begin, const unsigned int end) {
+          std::vector<unsigned int> place(K->n(), missing);
           for (unsigned int bm = begin; bm < end; ++bm)
             {
               const unsigned int b = bm / 6, m = bm % 6;
-              const auto         q = first_unknown(b);
+              const auto         q   = first_unknown(b);
+              const auto         row = q + m;
+              for (unsigned int k = 0; k < pattern.row_length(row); ++k)
+                place[pattern.column_number(row, k)] = k;
+              double *body_values = row_values(row);
               for (const auto s : slaves[b])
                 {
                   const double Jm = J[b][slave_index[s]][m];
                   if (Jm == 0.)
                     continue;
-                  for (auto e = K->begin(s); e != K->end(s); ++e)
-                    if (e->value() != 0.)
-                      K->add(q + m, e->column(), Jm * e->value());
+                  const double *values = row_values(s);
+                  for (unsigned int k = 0; k < pattern.row_length(s); ++k)
+                    if (values[k] != 0.)
+                      {
+                        const double a = Jm * values[k];
+                        if (a == 0.)
+                          continue;
+                        const unsigned int at =
+                          place[pattern.column_number(s, k)];
+                        AssertThrow(at != missing,
+                                    ExcMessage(
+                                      "a rigid body's coupling is not in the "
+                                      "matrix's pattern"));
+                        body_values[at] += a;
+                      }
                 }
+              for (unsigned int k = 0; k < pattern.row_length(row); ++k)
+                place[pattern.column_number(row, k)] = missing;
             }
         },
         1);
       for (unsigned int b = 0; b < bodies.size(); ++b)
         for (const auto s : slaves[b])
           {
-            for (auto e = K->begin(s); e != K->end(s); ++e)
-              e->value() = 0.;
-            K->set(s, s, 1.);
+            double *values = row_values(s);
+            std::fill(values, values + pattern.row_length(s), 0.);
+            values[0] = 1.;
           }
     }
 
