@@ -923,12 +923,19 @@ namespace TissueContact
         return {};
       const std::vector<Point<3>> x = surface.positions(u);
       update_candidates(x);
-      std::map<unsigned int, double> depth_of;
+      // each vertex of a pair's surface body: its largest depth (a flag
+      // and a value per vertex, read out in the vertices' order)
+      std::vector<unsigned char>      on_surface(x.size(), 0);
+      std::vector<double>             depth_of(x.size(), 0.);
+      std::vector<types::material_id> surface_bodies;
       for (const auto &p : pairs)
-        for (unsigned int t = 0; t < surface.triangles.size(); ++t)
-          if (surface.triangle_body[t] == p.surface_body)
-            for (const unsigned int v : surface.triangles[t])
-              depth_of.emplace(v, 0.);
+        surface_bodies.push_back(p.surface_body);
+      for (unsigned int t = 0; t < surface.triangles.size(); ++t)
+        if (std::find(surface_bodies.begin(),
+                      surface_bodies.end(),
+                      surface.triangle_body[t]) != surface_bodies.end())
+          for (const unsigned int v : surface.triangles[t])
+            on_surface[v] = 1;
       for (unsigned int i = 0; i < surface_triangles.size(); ++i)
         for_each_listed_candidate_of(
           i,
@@ -958,11 +965,16 @@ namespace TissueContact
                 for (unsigned int j = 0; j < 4; ++j)
                   g += std::max(lambda[j], 0.) * depth[tets[k][j]];
                 depth_of[v]      = std::max(depth_of[v], g);
+                on_surface[v]    = 1;
                 double &pair_max = per_pair[&p - pairs.data()];
                 pair_max         = std::max(pair_max, g);
               }
           });
-      return {depth_of.begin(), depth_of.end()};
+      std::vector<std::pair<unsigned int, double>> result;
+      for (unsigned int v = 0; v < x.size(); ++v)
+        if (on_surface[v])
+          result.emplace_back(v, depth_of[v]);
+      return result;
     }
 
 
