@@ -663,7 +663,9 @@ namespace TissueContact
        * p_a/\partial\Lambda_{\alpha_l}@f$. */
       struct VertexJacobian
       {
-        unsigned int                         p, n_p, n_l;
+        /** the vertex's place k in the polygon, its parameters' first
+         * index p and count n_p, its Lambda entries' count n_l */
+        unsigned int                         k, p, n_p, n_l;
         std::array<unsigned int, 6>          alpha;
         std::array<std::array<double, 6>, 3> J;
       };
@@ -744,6 +746,7 @@ namespace TissueContact
             if (v.kind == ZetaVertex::fixed)
               continue;
             VertexJacobian &w = vj[n_v++];
+            w.k               = k;
             w.p               = v.p;
             w.n_p             = v.n_p;
             if (v.kind == ZetaVertex::edge_cut)
@@ -800,6 +803,10 @@ namespace TissueContact
             for (unsigned int cc = b; cc < n_v; ++cc)
               {
                 const VertexJacobian &wc = vj[cc];
+                // the fan triangles (0, k, k + 1) couple vertex 0 with all
+                // and vertex k with k + 1 only: the other blocks are zero
+                if (wb.k != 0 && wc.k != wb.k && wc.k != wb.k + 1)
+                  continue;
                 if (wb.n_p == 1 && wc.n_p == 1)
                   add_vertex_pair<1, 2, 1, 2>(fan, wb, wc, cc != b, ld);
                 else if (wb.n_p == 1)
