@@ -180,25 +180,15 @@ namespace TissueContact
       const auto             row_values = [&](const types::global_dof_index i) {
         return &K->diag_element(i);
       };
-      // the place of column j in row i: 0 for the diagonal, else found
-      // among the other columns, ascending; invalid if not stored
+      // the place of column j in row i, counted from the row's first
+      // (diagonal) entry; invalid if not stored
       constexpr unsigned int missing  = numbers::invalid_unsigned_int;
       const auto             place_of = [&](const types::global_dof_index i,
                                 const types::global_dof_index j) {
-        if (i == j)
-          return 0u;
-        unsigned int lo = 1, hi = pattern.row_length(i);
-        while (lo < hi)
-          {
-            const unsigned int mid = (lo + hi) / 2;
-            if (pattern.column_number(i, mid) < j)
-              lo = mid + 1;
-            else
-              hi = mid;
-          }
-        return lo < pattern.row_length(i) && pattern.column_number(i, lo) == j ?
-                             lo :
-                             missing;
+        const auto at = pattern(i, j);
+        return at == SparsityPattern::invalid_entry ?
+                             missing :
+                             static_cast<unsigned int>(at - pattern(i, i));
       };
       std::vector<bool> has_slave_column(K->m(), false);
       for (const auto &body_slaves : slaves)

@@ -9,6 +9,11 @@ namespace TissueContact
 {
   using namespace dealii;
 
+  /** The number of ranges to split rows into: one per thread
+   * (MultithreadInfo::n_threads()), at most 64. */
+  unsigned int
+  n_row_ranges();
+
   /**
    * Split rows 0..n into @p n_parts ranges of about equal work for threads
    * that each own the rows of one range: a loop over elements (or contact
@@ -23,11 +28,6 @@ namespace TissueContact
    * b_0 = 0 <= b_1 <= ... <= b_P = n; range p is [b_p, b_{p+1}), and b_p is
    * the first row with at least p / P of the total work before it.
    */
-  /** The number of ranges to split rows into: one per thread
-   * (MultithreadInfo::n_threads()), at most 64. */
-  unsigned int
-  n_row_ranges();
-
   std::vector<types::global_dof_index>
   balanced_row_ranges(const std::vector<std::size_t> &work,
                       const unsigned int              n_parts);
