@@ -25,23 +25,30 @@ using namespace dealii;
 using namespace TissueContact;
 using namespace TissueContactTests;
 
+// the unit cube in n x n x n subcubes of tetrahedra, distorted, two bodies:
+// material 1 where x > 0.5, 0 elsewhere
+void
+two_body_cube(Triangulation<3> &tria, const unsigned int n)
+{
+  GridGenerator::subdivided_hyper_rectangle_with_simplices(tria,
+                                                           {n, n, n},
+                                                           Point<3>(0, 0, 0),
+                                                           Point<3>(1, 1, 1));
+  GridTools::distort_random(0.2, tria, true, 7);
+  for (const auto &cell : tria.active_cell_iterators())
+    cell->set_material_id(cell->center()[0] > 0.5 ? 1 : 0);
+}
+
 void
 check(const unsigned int degree)
 {
   deallog << "=== P" << degree << std::endl;
   Triangulation<3> tria;
-  GridGenerator::subdivided_hyper_rectangle_with_simplices(tria,
-                                                           {2, 2, 2},
-                                                           Point<3>(0, 0, 0),
-                                                           Point<3>(1, 1, 1));
-  GridTools::distort_random(0.2, tria, true, 7);
+  two_body_cube(tria, 2);
   for (const auto &cell : tria.active_cell_iterators())
-    {
-      cell->set_material_id(cell->center()[0] > 0.5 ? 1 : 0);
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && std::abs(face->center()[0] - 1.) < 1e-10)
-          face->set_boundary_id(1);
-    }
+    for (const auto &face : cell->face_iterators())
+      if (face->at_boundary() && std::abs(face->center()[0] - 1.) < 1e-10)
+        face->set_boundary_id(1);
 
   auto fiber = std::make_shared<FunctionParser<3>>(3);
   fiber->initialize("x,y,z", "1; y; z", std::map<std::string, double>());
@@ -191,13 +198,7 @@ check_threads()
 {
   deallog << "=== threads" << std::endl;
   Triangulation<3> tria;
-  GridGenerator::subdivided_hyper_rectangle_with_simplices(tria,
-                                                           {10, 10, 10},
-                                                           Point<3>(0, 0, 0),
-                                                           Point<3>(1, 1, 1));
-  GridTools::distort_random(0.2, tria, true, 7);
-  for (const auto &cell : tria.active_cell_iterators())
-    cell->set_material_id(cell->center()[0] > 0.5 ? 1 : 0);
+  two_body_cube(tria, 10);
   // the second body's volume term at the vertices: the cells that two
   // threads both compute write its element derivatives once
   const Materials::MooneyRivlin        m0(5., 1., 50.);
