@@ -925,15 +925,10 @@ namespace TissueContact
       update_candidates(x);
       // each vertex of a pair's surface body: its largest depth (a flag
       // and a value per vertex, read out in the vertices' order)
-      std::vector<unsigned char>      on_surface(x.size(), 0);
-      std::vector<double>             depth_of(x.size(), 0.);
-      std::vector<types::material_id> surface_bodies;
-      for (const auto &p : pairs)
-        surface_bodies.push_back(p.surface_body);
+      std::vector<unsigned char> on_surface(x.size(), 0);
+      std::vector<double>        depth_of(x.size(), 0.);
       for (unsigned int t = 0; t < surface.triangles.size(); ++t)
-        if (std::find(surface_bodies.begin(),
-                      surface_bodies.end(),
-                      surface.triangle_body[t]) != surface_bodies.end())
+        if (surface_of_a_pair(t))
           for (const unsigned int v : surface.triangles[t])
             on_surface[v] = 1;
       for (unsigned int i = 0; i < surface_triangles.size(); ++i)
