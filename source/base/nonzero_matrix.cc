@@ -224,15 +224,19 @@ namespace TissueContact
                           const Vector<double> &x,
                           const Vector<double> *b) const
   {
-    const types::global_dof_index n = m();
+    const types::global_dof_index n  = m();
+    const double *const           xv = x.begin();
+    double *const                 yv = y.begin();
+    const double *const           bv = residual ? b->begin() : nullptr;
+    const double *const           d  = diagonal.data();
     // row i's sum begun as SparseMatrix::vmult() and residual() begin it:
     // 0 + a_ii x_i, or b_i - a_ii x_i; then a term added or subtracted
     const auto first = [&](const types::global_dof_index i) {
-      double s = residual ? (*b)[i] : 0.;
+      double s = residual ? bv[i] : 0.;
       if (residual)
-        s -= diagonal[i] * x[i];
+        s -= d[i] * xv[i];
       else
-        s += diagonal[i] * x[i];
+        s += d[i] * xv[i];
       return s;
     };
     const auto add = [](double &s, const double a, const double xk) {
@@ -241,27 +245,41 @@ namespace TissueContact
       else
         s += a * xk;
     };
-    for_each_row(group_start.size() - 1, [&](const types::global_dof_index g) {
-      const types::global_dof_index i = 3 * g;
-      // a missing row (the last group of a matrix of 3 k + 1 or 2 rows)
-      // reads row i's diagonal and x and is not written
-      const types::global_dof_index i1 = std::min(i + 1, n - 1),
-                                    i2 = std::min(i + 2, n - 1);
-      double        s0 = first(i), s1 = first(i1), s2 = first(i2);
-      const double *v = value.data() + 3 * group_start[g];
-      for (std::size_t k = group_start[g]; k < group_start[g + 1]; ++k, v += 3)
-        {
-          const double xk = x[column[k]];
-          add(s0, v[0], xk);
-          add(s1, v[1], xk);
-          add(s2, v[2], xk);
-        }
-      y[i] = s0;
-      if (i + 1 < n)
-        y[i + 1] = s1;
-      if (i + 2 < n)
-        y[i + 2] = s2;
-    });
+    // the groups' loop written out in each range, on raw arrays: called
+    // per group through for_each_row(), the group's function was not
+    // inlined (a product on 31 944 DoFs, one thread: 0.35 -> 0.30 ms)
+    const std::size_t *const             start = group_start.data();
+    const types::global_dof_index *const cols  = column.data();
+    const double *const                  vals  = value.data();
+    parallel::apply_to_subranges(
+      types::global_dof_index(0),
+      types::global_dof_index(group_start.size() - 1),
+      [&](const types::global_dof_index begin,
+          const types::global_dof_index end) {
+        for (types::global_dof_index g = begin; g < end; ++g)
+          {
+            const types::global_dof_index i = 3 * g;
+            // a missing row (the last group of a matrix of 3 k + 1 or 2
+            // rows) reads row i's diagonal and x and is not written
+            const types::global_dof_index i1 = std::min(i + 1, n - 1),
+                                          i2 = std::min(i + 2, n - 1);
+            double        s0 = first(i), s1 = first(i1), s2 = first(i2);
+            const double *v = vals + 3 * start[g];
+            for (std::size_t k = start[g]; k < start[g + 1]; ++k, v += 3)
+              {
+                const double xk = xv[cols[k]];
+                add(s0, v[0], xk);
+                add(s1, v[1], xk);
+                add(s2, v[2], xk);
+              }
+            yv[i] = s0;
+            if (i + 1 < n)
+              yv[i + 1] = s1;
+            if (i + 2 < n)
+              yv[i + 2] = s2;
+          }
+      },
+      500);
   }
 
 
