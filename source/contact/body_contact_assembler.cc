@@ -505,22 +505,33 @@ namespace TissueContact
         return;
       evaluate_pairs(u, K != nullptr);
       const auto scope = time_section(timer, "contact: insertion");
-      // the pairs added in the list's order, each row of R and K by one
-      // thread, the owner of its range of rows: every entry receives the
-      // same additions in the same order as in a serial loop (the same sums
-      // to the last bit), and the rows' searches run on all threads (the
-      // serial insertion was 7 % of the full knee's run on two threads)
+      // the rows of R and K split among the threads, each row added by one
+      // thread, the owner of its range, with the pairs' additions in the
+      // list's order: every entry receives the same additions in the same
+      // order as in a serial loop over the pairs (the same sums to the last
+      // bit)
+      std::vector<const PairResult *> list;
+      for (const auto &results : pair_results)
+        for (const PairResult &r : results)
+          list.push_back(&r);
+      std::vector<DistinctDofs> distinct(list.size());
+      parallel::apply_to_subranges(
+        std::size_t(0),
+        list.size(),
+        [&](const std::size_t begin, const std::size_t end) {
+          for (std::size_t p = begin; p < end; ++p)
+            distinct[p] = distinct_dofs(*list[p]);
+        },
+        256);
       const unsigned int                         n_parts = n_row_ranges();
       const std::vector<types::global_dof_index> bounds =
-        insertion_row_ranges(R.size(), n_parts);
+        insertion_row_ranges(distinct, R.size(), n_parts);
       parallel::apply_to_subranges(
         0u,
         n_parts,
         [&](const unsigned int part_begin, const unsigned int part_end) {
           for (unsigned int part = part_begin; part < part_end; ++part)
-            for (const auto &results : pair_results)
-              for (const PairResult &r : results)
-                add_pair(r, bounds[part], bounds[part + 1], R, K);
+            add_rows(list, distinct, bounds[part], bounds[part + 1], R, K);
         },
         1);
       pair_results.clear();
@@ -529,8 +540,9 @@ namespace TissueContact
 
     std::vector<types::global_dof_index>
     BodyContactAssembler::insertion_row_ranges(
-      const types::global_dof_index n_rows,
-      const unsigned int            n_parts) const
+      const std::vector<DistinctDofs> &distinct,
+      const types::global_dof_index    n_rows,
+      const unsigned int               n_parts) const
     {
       if (n_parts == 1)
         return {0, n_rows};
@@ -541,10 +553,9 @@ namespace TissueContact
       // whole flexion gained nothing measurable; doc/theory/05-contact.md
       // sec. 7)
       std::vector<std::size_t> incidences(n_rows + 1, 0);
-      for (const auto &results : pair_results)
-        for (const PairResult &r : results)
-          for (const types::global_dof_index row : pair_dofs(r.t, r.k))
-            ++incidences[row + 1];
+      for (const DistinctDofs &d : distinct)
+        for (unsigned int s = 0; s < d.n; ++s)
+          ++incidences[d.dofs[s] + 1];
       std::partial_sum(incidences.begin(),
                        incidences.end(),
                        incidences.begin());
@@ -552,93 +563,145 @@ namespace TissueContact
     }
 
 
-    void
-    BodyContactAssembler::add_pair(const PairResult             &r,
-                                   const types::global_dof_index lo,
-                                   const types::global_dof_index hi,
-                                   Vector<double>               &R,
-                                   SparseMatrix<double>         *K) const
+    BodyContactAssembler::DistinctDofs
+    BodyContactAssembler::distinct_dofs(const PairResult &r) const
     {
-      const auto  dofs = pair_dofs(r.t, r.k);
-      const auto &d    = r.d;
-      bool        any  = false;
-      for (unsigned int i = 0; i < 21; ++i)
-        if (dofs[i] >= lo && dofs[i] < hi)
-          {
-            R[dofs[i]] += d.gradient[i];
-            any = true;
-          }
-      if (K == nullptr || !any)
-        return;
-      // rows added with sorted, unique column indices (a vertex shared
-      // by the triangle and the tetrahedron appears twice among the 21)
-      std::array<types::global_dof_index, 21> unique_dofs;
-      std::array<unsigned int, 21>            slot;
-      unsigned int                            n_unique = 0;
-      std::array<unsigned int, 21>            order;
+      const auto                   dofs = pair_dofs(r.t, r.k);
+      std::array<unsigned int, 21> order;
       std::iota(order.begin(), order.end(), 0);
       std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
         return dofs[a] < dofs[b];
       });
+      DistinctDofs d;
       for (const unsigned int i : order)
         {
-          if (n_unique == 0 || unique_dofs[n_unique - 1] != dofs[i])
-            unique_dofs[n_unique++] = dofs[i];
-          slot[i] = n_unique - 1;
-        }
-      std::array<std::array<double, 21>, 21> block{};
-      for (unsigned int i = 0; i < 21; ++i)
-        if (unique_dofs[slot[i]] >= lo && unique_dofs[slot[i]] < hi)
-          for (unsigned int j = 0; j < 21; ++j)
-            block[slot[i]][slot[j]] += d.hessian[i][j];
-      // each row's entries found by one walk along the row (as
-      // SparseMatrix::add() finds them), but only for the first of a
-      // vertex's rows: the pattern stores its diagonal first and the other
-      // columns ascending, so the rows of one vertex, which have the same
-      // columns, hold a column of another vertex at the same place, and the
-      // next rows try that place first. Every entry receives one addition,
-      // as with add()
-      const SparsityPattern       &pattern = K->get_sparsity_pattern();
-      std::array<unsigned int, 21> place;
-      bool                         have_places = false;
-      for (unsigned int i = 0; i < n_unique; ++i)
-        {
-          const types::global_dof_index row = unique_dofs[i];
-          if (row < lo || row >= hi)
-            continue;
-          double            *values = &K->diag_element(row);
-          const unsigned int length = pattern.row_length(row);
-          unsigned int       at     = 1;
-          for (unsigned int j = 0; j < n_unique; ++j)
+          if (d.n == 0 || d.dofs[d.n - 1] != dofs[i])
             {
-              const types::global_dof_index column = unique_dofs[j];
-              if (column == row)
-                {
-                  values[0] += block[i][j];
-                  place[j] = 0;
-                  continue;
-                }
-              if (have_places && place[j] >= at && place[j] < length &&
-                  pattern.column_number(row, place[j]) == column)
-                at = place[j];
-              else
-                while (at < length && pattern.column_number(row, at) < column)
-                  ++at;
-              if (at == length || pattern.column_number(row, at) != column)
-                {
-                  // only a zero may miss its place, as with add()
-                  AssertThrow(block[i][j] == 0.,
-                              ExcMessage("A contact pair's coupling (row " +
-                                         std::to_string(row) + ", column " +
-                                         std::to_string(column) +
-                                         ") is not in the matrix's pattern."));
-                  place[j] = 0;
-                  continue;
-                }
-              values[at] += block[i][j];
-              place[j] = at;
+              d.first[d.n]  = i;
+              d.dofs[d.n++] = dofs[i];
             }
-          have_places = true;
+          d.slot[i] = d.n - 1;
+        }
+      return d;
+    }
+
+
+    void
+    BodyContactAssembler::add_rows(const std::vector<const PairResult *> &list,
+                                   const std::vector<DistinctDofs> &distinct,
+                                   const types::global_dof_index    lo,
+                                   const types::global_dof_index    hi,
+                                   Vector<double>                  &R,
+                                   SparseMatrix<double>            *K) const
+    {
+      // the (pair, distinct DoF) incidences of each row of the range, in
+      // the list's order
+      std::vector<unsigned int> start(hi - lo + 1, 0);
+      for (const DistinctDofs &d : distinct)
+        for (unsigned int s = 0; s < d.n; ++s)
+          if (d.dofs[s] >= lo && d.dofs[s] < hi)
+            ++start[d.dofs[s] - lo + 1];
+      std::partial_sum(start.begin(), start.end(), start.begin());
+      std::vector<std::pair<unsigned int, unsigned int>> incidence(
+        start.back());
+      {
+        std::vector<unsigned int> next(start.begin(), start.end() - 1);
+        for (unsigned int p = 0; p < distinct.size(); ++p)
+          for (unsigned int s = 0; s < distinct[p].n; ++s)
+            {
+              const types::global_dof_index row = distinct[p].dofs[s];
+              if (row >= lo && row < hi)
+                incidence[next[row - lo]++] = {p, s};
+            }
+      }
+      // a column's place in the current row: valid where its stamp is the
+      // row
+      std::vector<types::global_dof_index> stamp;
+      std::vector<unsigned int>            place;
+      if (K != nullptr)
+        {
+          // (K may have more columns than R rows: a free rigid body's)
+          stamp.assign(K->n(), numbers::invalid_dof_index);
+          place.resize(K->n());
+        }
+      for (types::global_dof_index row = lo; row < hi; ++row)
+        {
+          const unsigned int first = start[row - lo],
+                             last  = start[row - lo + 1];
+          if (first == last)
+            continue;
+          // R: each pair's entries at this row, in their order among the 21
+          for (unsigned int e = first; e < last; ++e)
+            {
+              const auto &[p, s]    = incidence[e];
+              const DistinctDofs &d = distinct[p];
+              if (d.n == 21)
+                R[row] += list[p]->d.gradient[d.first[s]];
+              else
+                for (unsigned int i = 0; i < 21; ++i)
+                  if (d.slot[i] == s)
+                    R[row] += list[p]->d.gradient[i];
+            }
+          if (K == nullptr)
+            continue;
+          const SparsityPattern &pattern = K->get_sparsity_pattern();
+          double                *values  = &K->diag_element(row);
+          const unsigned int     length  = pattern.row_length(row);
+          for (unsigned int q = 0; q < length; ++q)
+            {
+              const types::global_dof_index column =
+                pattern.column_number(row, q);
+              stamp[column] = row;
+              place[column] = q;
+            }
+          const auto add = [&](const types::global_dof_index column,
+                               const double                  value) {
+            if (stamp[column] == row)
+              values[place[column]] += value;
+            else
+              // only a zero may miss its place, as with add()
+              AssertThrow(value == 0.,
+                          ExcMessage("A contact pair's coupling (row " +
+                                     std::to_string(row) + ", column " +
+                                     std::to_string(column) +
+                                     ") is not in the matrix's pattern."));
+          };
+          // K: each pair's row summed onto its distinct columns (in the
+          // order of the 21 rows and columns, from zero), then added once
+          // per column
+          for (unsigned int e = first; e < last; ++e)
+            {
+#if defined(__GNUC__)
+              // the next pair's row fetched ahead: the pairs' Hessians are
+              // read in no order the processor foresees
+              if (e + 1 < last)
+                {
+                  const auto &[pn, sn] = incidence[e + 1];
+                  const char *h        = reinterpret_cast<const char *>(
+                    list[pn]->d.hessian[distinct[pn].first[sn]].data());
+                  for (unsigned int b = 0; b < 21 * sizeof(double); b += 64)
+                    __builtin_prefetch(h + b);
+                }
+#endif
+              const auto &[p, s]    = incidence[e];
+              const DistinctDofs &d = distinct[p];
+              const auto         &H = list[p]->d.hessian;
+              if (d.n == 21)
+                {
+                  // each column once: its sum from zero is 0 + H_ij
+                  const auto &row_of_H = H[d.first[s]];
+                  for (unsigned int j = 0; j < 21; ++j)
+                    add(d.dofs[d.slot[j]], 0. + row_of_H[j]);
+                  continue;
+                }
+              std::array<double, 21> sum{};
+              for (unsigned int i = 0; i < 21; ++i)
+                if (d.slot[i] == s)
+                  for (unsigned int j = 0; j < 21; ++j)
+                    sum[d.slot[j]] += H[i][j];
+              for (unsigned int c = 0; c < d.n; ++c)
+                add(d.dofs[c], sum[c]);
+            }
         }
     }
 

@@ -414,22 +414,42 @@ namespace TissueContact
        * order, from evaluate_pairs() until they are added. */
       mutable std::vector<std::vector<PairResult>> pair_results;
 
+      /** A pair's 21 DoFs (pair_dofs()): the distinct ones, ascending,
+       * the place of each of the 21 among them, and the first of the 21 at
+       * each place (a vertex shared by the triangle and the tetrahedron
+       * appears twice among the 21; with none shared, @p n = 21 and each
+       * place has one of them). */
+      struct DistinctDofs
+      {
+        std::array<types::global_dof_index, 21> dofs;
+        std::array<unsigned char, 21>           slot, first;
+        unsigned int                            n = 0;
+      };
+
       /** Boundaries 0 = b_0 <= ... <= b_n = @p n_rows of @p n_parts ranges
        * of rows with about equal shares of the (pair, row) incidences of
-       * pair_results: part p adds the rows b_p ... b_{p+1} - 1 (one part:
-       * all rows, without counting). */
+       * the pairs' @p distinct DoFs: part p adds the rows b_p ... b_{p+1} -
+       * 1 (one part: all rows, without counting). */
       std::vector<types::global_dof_index>
-      insertion_row_ranges(const types::global_dof_index n_rows,
-                           const unsigned int            n_parts) const;
+      insertion_row_ranges(const std::vector<DistinctDofs> &distinct,
+                           const types::global_dof_index    n_rows,
+                           const unsigned int               n_parts) const;
 
-      /** Add the gradient and (if @p K) Hessian of @p r to the rows lo ..
-       * hi - 1 of @p R and @p K. */
+      /** The distinct DoFs of pair @p r. */
+      DistinctDofs
+      distinct_dofs(const PairResult &r) const;
+
+      /** Add the gradients and (if @p K) Hessians of the pairs @p list to
+       * the rows lo .. hi - 1 of @p R and @p K, row by row: each row's
+       * entries found once, then every pair's additions to it in the
+       * list's order. */
       void
-      add_pair(const PairResult             &r,
-               const types::global_dof_index lo,
-               const types::global_dof_index hi,
-               Vector<double>               &R,
-               SparseMatrix<double>         *K) const;
+      add_rows(const std::vector<const PairResult *> &list,
+               const std::vector<DistinctDofs>       &distinct,
+               const types::global_dof_index          lo,
+               const types::global_dof_index          hi,
+               Vector<double>                        &R,
+               SparseMatrix<double>                  *K) const;
 
       /** Fill pair_results at @p u: the triangles in parallel. */
       void
