@@ -5,6 +5,7 @@
 // external force equals rho g V + t A, and an inverted element is reported;
 // on a renumbered mesh two threads assemble the same bits as one.
 
+#include "../distorted_box.h"
 #include "../tests.h"
 
 #include <tissue_contact/elasticity/elastic_assembler.h>
@@ -15,8 +16,6 @@
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/multithread_info.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <map>
@@ -30,13 +29,7 @@ using namespace TissueContactTests;
 void
 two_body_cube(Triangulation<3> &tria, const unsigned int n)
 {
-  GridGenerator::subdivided_hyper_rectangle_with_simplices(tria,
-                                                           {n, n, n},
-                                                           Point<3>(0, 0, 0),
-                                                           Point<3>(1, 1, 1));
-  GridTools::distort_random(0.2, tria, true, 7);
-  for (const auto &cell : tria.active_cell_iterators())
-    cell->set_material_id(cell->center()[0] > 0.5 ? 1 : 0);
+  distorted_box(tria, {{n, n, n}}, Point<3>(1, 1, 1), 0.2, 7, 0.5);
 }
 
 void

@@ -11,6 +11,7 @@
 // the residual, symmetric, zero at rest, the pointwise energy under a uniform
 // dilation; on P1 it is the pointwise formulation (J is constant).
 
+#include "../distorted_box.h"
 #include "../tests.h"
 
 #include <tissue_contact/base/exceptions.h>
@@ -19,8 +20,6 @@
 #include <tissue_contact/materials/uncoupled_material.h>
 
 #include <deal.II/base/function_parser.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_tools.h>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -33,13 +32,7 @@ main(int argc, char **argv)
   initlog();
 
   Triangulation<3> tria;
-  GridGenerator::subdivided_hyper_rectangle_with_simplices(tria,
-                                                           {2, 2, 2},
-                                                           Point<3>(0, 0, 0),
-                                                           Point<3>(1, 1, 1));
-  GridTools::distort_random(0.2, tria, true, 7);
-  for (const auto &cell : tria.active_cell_iterators())
-    cell->set_material_id(cell->center()[0] > 0.5 ? 1 : 0);
+  distorted_box(tria, {{2, 2, 2}}, Point<3>(1, 1, 1), 0.2, 7, 0.5);
 
   auto fiber = std::make_shared<FunctionParser<3>>(3);
   fiber->initialize("x,y,z", "1; y; z", std::map<std::string, double>());

@@ -10,6 +10,7 @@
 // on P1 the corotated material exactly; the 6-point P2 rule integrates its
 // stiffness exactly.
 
+#include "../distorted_box.h"
 #include "../tests.h"
 
 #include <tissue_contact/base/polar_rotation.h>
@@ -18,8 +19,6 @@
 #include <tissue_contact/materials/linear_elastic.h>
 #include <tissue_contact/materials/neo_hookean.h>
 
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_tools.h>
 
 using namespace dealii;
 using namespace TissueContact;
@@ -114,13 +113,7 @@ main(int argc, char **argv)
   check_polar_rotation();
 
   Triangulation<3> tria;
-  GridGenerator::subdivided_hyper_rectangle_with_simplices(tria,
-                                                           {2, 1, 1},
-                                                           Point<3>(0, 0, 0),
-                                                           Point<3>(2, 1, 1));
-  GridTools::distort_random(0.2, tria, true, 3);
-  for (const auto &cell : tria.active_cell_iterators())
-    cell->set_material_id(cell->center()[0] > 1.5 ? 1 : 0);
+  distorted_box(tria, {{2, 1, 1}}, Point<3>(2, 1, 1), 0.2, 3, 1.5);
 
   const double                mu = 3., lambda = 5.;
   const Materials::Corotated  corotated(mu, lambda);

@@ -12,6 +12,7 @@
 //  7. a rigid body (the skin layer of the layered block) rotated by 30
 //     degrees carries the free elastic body along without stressing it.
 
+#include "../distorted_box.h"
 #include "../tests.h"
 
 #include <tissue_contact/base/exceptions.h>
@@ -22,8 +23,6 @@
 #include <tissue_contact/solvers/amg_preconditioner.h>
 #include <tissue_contact/solvers/stagnation_control.h>
 
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/diagonal_matrix.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/precondition.h>
@@ -125,11 +124,7 @@ namespace
   patch_test(const unsigned int degree)
   {
     Triangulation<3> tria;
-    GridGenerator::subdivided_hyper_rectangle_with_simplices(tria,
-                                                             {3, 3, 3},
-                                                             Point<3>(0, 0, 0),
-                                                             Point<3>(1, 1, 1));
-    GridTools::distort_random(0.25, tria, true, 3);
+    distorted_box(tria, {{3, 3, 3}}, Point<3>(1, 1, 1), 0.25, 3);
     const Materials::MooneyRivlin      material(5., 1., 50.);
     const Discretization               disc(tria, degree);
     const Elasticity::ElasticAssembler assembler(disc,
