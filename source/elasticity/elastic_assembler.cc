@@ -1031,37 +1031,73 @@ namespace TissueContact
             return std::numeric_limits<double>::infinity();
           W += nodal->energy(state);
         }
-      for (const unsigned int c : deformable_cells)
+      // each cell's terms computed on the threads, then added to W in the
+      // cells' order, term by term, as a serial loop adds them (the same sum
+      // to the last bit on any number of threads)
+      const unsigned int         n_terms = n_q + 2;
+      const std::size_t          n_cells = deformable_cells.size();
+      std::vector<double>        terms(n_cells * n_terms);
+      std::vector<unsigned char> n_used(n_cells, 0);
+      std::vector<char>          cell_valid(n_cells, 1);
+      parallel::apply_to_subranges(
+        std::size_t(0),
+        n_cells,
+        [&](const std::size_t begin, const std::size_t end) {
+          for (std::size_t i = begin; i < end; ++i)
+            {
+              const unsigned int c    = deformable_cells[i];
+              double            *term = &terms[i * n_terms];
+              unsigned int       t    = 0;
+              const bool         single =
+                !single_rotation_index.empty() && single_rotation_index[c] >= 0;
+              for (unsigned int q = 0; q < n_q; ++q)
+                {
+                  const Tensor<2, 3> F = deformation_gradient(c, q, u);
+                  if (!(determinant(F) > 0.))
+                    {
+                      cell_valid[i] = 0;
+                      break;
+                    }
+                  if (!single)
+                    term[t++] = cell_material[c]->energy(F, X_q[c * n_q + q]) *
+                                JxW[c * n_q + q];
+                }
+              if (!cell_valid[i])
+                continue;
+              if (single)
+                {
+                  // (SR1)
+                  std::array<Point<3>, 10> x;
+                  double                   W_e = 0.;
+                  if (!single_rotation_element(c, u, x.data())
+                         .energy(x.data(), W_e))
+                    {
+                      cell_valid[i] = 0;
+                      continue;
+                    }
+                  term[t++] = W_e;
+                }
+              if (!mean_dilatation_kappa.empty() &&
+                  mean_dilatation_kappa[c] > 0.)
+                {
+                  // V_e U(J_bar_e)   (D1)
+                  double       V0    = 0.;
+                  const double J_bar = mean_dilatation(c, u, V0);
+                  term[t++] =
+                    V0 *
+                    Materials::VolumetricEnergy{mean_dilatation_kappa[c]}.U(
+                      J_bar);
+                }
+              n_used[i] = t;
+            }
+        },
+        256);
+      for (std::size_t i = 0; i < n_cells; ++i)
         {
-          const bool single =
-            !single_rotation_index.empty() && single_rotation_index[c] >= 0;
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              const Tensor<2, 3> F = deformation_gradient(c, q, u);
-              if (!(determinant(F) > 0.))
-                return std::numeric_limits<double>::infinity();
-              if (!single)
-                W += cell_material[c]->energy(F, X_q[c * n_q + q]) *
-                     JxW[c * n_q + q];
-            }
-          if (single)
-            {
-              // (SR1)
-              std::array<Point<3>, 10> x;
-              double                   W_e = 0.;
-              if (!single_rotation_element(c, u, x.data())
-                     .energy(x.data(), W_e))
-                return std::numeric_limits<double>::infinity();
-              W += W_e;
-            }
-          if (!mean_dilatation_kappa.empty() && mean_dilatation_kappa[c] > 0.)
-            {
-              // V_e U(J_bar_e)   (D1)
-              double       V0    = 0.;
-              const double J_bar = mean_dilatation(c, u, V0);
-              W += V0 * Materials::VolumetricEnergy{mean_dilatation_kappa[c]}.U(
-                          J_bar);
-            }
+          if (!cell_valid[i])
+            return std::numeric_limits<double>::infinity();
+          for (unsigned int t = 0; t < n_used[i]; ++t)
+            W += terms[i * n_terms + t];
         }
       return W - load_factor * (f_ext * u);
     }
