@@ -133,7 +133,8 @@ namespace TissueContact
             {"linear_iterations", state.statistics.linear_iterations},
             {"tangent_shifts", state.statistics.tangent_shifts},
             {"multiplier_updates", state.statistics.multiplier_updates},
-            {"direct_fallbacks", state.statistics.direct_fallbacks}};
+            {"direct_fallbacks", state.statistics.direct_fallbacks},
+            {"cholesky_fallbacks", state.statistics.cholesky_fallbacks}};
           c.vectors = {{"u", u}, {"u_prev", state.u_prev}};
           const std::vector<double> multipliers =
             nonlinear_problem.multipliers();
@@ -185,6 +186,9 @@ namespace TissueContact
         if (restart->scalars.count("direct_fallbacks") > 0)
           state.statistics.direct_fallbacks =
             restart->scalar("direct_fallbacks");
+        if (restart->scalars.count("cholesky_fallbacks") > 0)
+          state.statistics.cholesky_fallbacks =
+            restart->scalar("cholesky_fallbacks");
         const auto n_multipliers = nonlinear_problem.multipliers().size();
         if (n_multipliers > 0)
           {
@@ -251,6 +255,12 @@ namespace TissueContact
               ", " + std::to_string(statistics.direct_fallbacks) +
                 " linear solves by the direct solver where GMRES+AMG did not "
                 "converge" :
+              std::string())
+        << (statistics.cholesky_fallbacks > 0 ?
+              ", " + std::to_string(statistics.cholesky_fallbacks) +
+                " linear solves by LU instead of Cholesky (tangents not "
+                "symmetric positive definite, and the solves right after "
+                "them)" :
               std::string())
         << "\n"
         << "  max |u_i| = " << u_max

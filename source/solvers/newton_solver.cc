@@ -415,6 +415,7 @@ namespace TissueContact
             const double eta =
               linear_solver->forcing(r, r_previous, eta_previous, tolerance);
             const unsigned int fallbacks = linear_solver->direct_fallbacks();
+            const unsigned int lu_solves = linear_solver->cholesky_fallbacks();
             info.linear_iterations = linear_solver->solve(K, du, rhs, eta);
             du += lift;
             r_previous   = r;
@@ -457,6 +458,8 @@ namespace TissueContact
               }
             statistics.direct_fallbacks +=
               linear_solver->direct_fallbacks() - fallbacks;
+            statistics.cholesky_fallbacks +=
+              linear_solver->cholesky_fallbacks() - lu_solves;
           }
 
           // LOOP 3: line search. Energy merit (Armijo) when asked for and

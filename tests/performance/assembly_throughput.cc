@@ -190,6 +190,7 @@ main(int argc, char **argv)
       for (const auto &[type, tolerance] :
            std::vector<std::pair<std::string, double>>{{"direct", 0.},
                                                        {"MUMPS", 0.},
+                                                       {"Cholesky", 0.},
                                                        {"GMRES+Jacobi", 0.1},
                                                        {"GMRES+AMG", 0.1},
                                                        {"GMRES+AMG6", 0.1},
@@ -198,10 +199,11 @@ main(int argc, char **argv)
                                                        {"GMRES+AMG6", 1e-8}})
         {
           Solvers::LinearSolver::Parameters p;
-          p.type               = type == "MUMPS"      ? "direct" :
-                                 type == "GMRES+AMG6" ? "GMRES+AMG" :
-                                                        type;
-          p.direct_solver      = type == "MUMPS" ? "MUMPS" : "UMFPACK";
+          p.type = type == "MUMPS" || type == "Cholesky" ? "direct" :
+                   type == "GMRES+AMG6"                  ? "GMRES+AMG" :
+                                                           type;
+          p.direct_solver =
+            type == "MUMPS" || type == "Cholesky" ? type : "UMFPACK";
           p.amg_rotations      = type == "GMRES+AMG6";
           p.relative_tolerance = tolerance;
           p.max_iterations     = 5000;

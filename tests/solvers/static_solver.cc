@@ -21,6 +21,7 @@
 #include <tissue_contact/materials/mooney_rivlin.h>
 #include <tissue_contact/simulation/static_simulation.h>
 #include <tissue_contact/solvers/amg_preconditioner.h>
+#include <tissue_contact/solvers/cholesky_factorization.h>
 #include <tissue_contact/solvers/stagnation_control.h>
 
 #include <deal.II/lac/diagonal_matrix.h>
@@ -667,6 +668,93 @@ namespace
             << std::endl;
   }
 
+  // Direct solver = Cholesky (Solvers::CholeskyFactorization; doc/theory/
+  // 04-solver.md, 4.5.3) on the 30 x 30 Laplacian: its solution is
+  // UMFPACK's to rounding; a second matrix of the same pattern reuses the
+  // symbolic analysis, one of another pattern (zeros stored in more
+  // places) makes a new one; the Laplacian shifted into indefiniteness
+  // (minus 2 I) and one made unsymmetric by 1e-9 of an entry are refused
+  // (1e-15, rounding, is not). Through LinearSolver a refused tangent is
+  // factorized by LU, and after a refusal the next 1, 2, 4, 8 solves go to
+  // the LU without trying (fewer refusals than solves of an indefinite
+  // run); a positive definite tangent after that is factorized by
+  // Cholesky again.
+  void
+  cholesky()
+  {
+    const Laplacian      laplacian(30);
+    const auto           n = laplacian.n;
+    SparseMatrix<double> A = laplacian(1.), B = laplacian(3.),
+                         C = laplacian(1.), U = laplacian(1.),
+                         S = laplacian(1.);
+    for (unsigned int i = 0; i < n; ++i)
+      C.diag_element(i) -= 2.;
+    U.set(5, 4, U(5, 4) * (1. + 1e-9));
+    S.set(5, 4, S(5, 4) * (1. + 1e-15));
+    DynamicSparsityPattern dsp(n, n);
+    for (const auto &e : A)
+      dsp.add(e.row(), e.column());
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        dsp.add(i, (i + 7) % n);
+        dsp.add((i + 7) % n, i);
+      }
+    SparsityPattern wide_pattern;
+    wide_pattern.copy_from(dsp);
+    SparseMatrix<double> W(wide_pattern);
+    for (const auto &e : A)
+      W.set(e.row(), e.column(), e.value());
+
+    Vector<double> b(n), x(n), z(n);
+    for (unsigned int i = 0; i < n; ++i)
+      b[i] = std::sin(0.1 * i + 0.3);
+    // |x - UMFPACK's solution| / |UMFPACK's solution|
+    const auto difference = [&](const SparseMatrix<double> &M) {
+      SparseDirectUMFPACK lu;
+      lu.initialize(M);
+      lu.vmult(z, b);
+      z -= x;
+      return z.l2_norm() / x.l2_norm();
+    };
+    Solvers::CholeskyFactorization cholesky;
+    double                         largest = 0.;
+    std::ostringstream             accepted;
+    for (const SparseMatrix<double> *M : {&A, &B, &W})
+      {
+        accepted << cholesky.factorize(*M) << " ";
+        cholesky.solve(x, b);
+        largest = std::max(largest, difference(*M));
+      }
+    accepted << "analyses " << cholesky.n_analyses() << "; indefinite "
+             << cholesky.factorize(C) << ", unsymmetric by 1e-9 "
+             << cholesky.factorize(U) << ", by 1e-15 " << cholesky.factorize(S);
+    deallog << "Cholesky: factorized A, B (same pattern), W (wider): "
+            << accepted.str() << "; largest difference from UMFPACK "
+            << error_bound(largest, -13) << std::endl;
+
+    Solvers::LinearSolver::Parameters p;
+    p.type          = "direct";
+    p.direct_solver = "Cholesky";
+    const Solvers::LinearSolver solver(p);
+    std::ostringstream          fallbacks;
+    largest = 0.;
+    // 7 indefinite solves: refused at the 1st, 3rd and 6th (then skipping
+    // 1, 2 and 4 solves), so the 7th and the first three definite ones go
+    // to the LU directly; the 4th definite one is factorized by Cholesky,
+    // which clears the backoff
+    for (const SparseMatrix<double> *M :
+         {&C, &C, &C, &C, &C, &C, &C, &A, &A, &A, &A, &A, &B})
+      {
+        solver.solve(*M, x, b);
+        largest = std::max(largest, difference(*M));
+        fallbacks << solver.cholesky_fallbacks() << " ";
+      }
+    deallog << "Cholesky in LinearSolver: LU solves after each of 7 "
+               "indefinite, then 6 definite tangents: "
+            << fallbacks.str() << "; largest difference from UMFPACK "
+            << error_bound(largest, -13) << std::endl;
+  }
+
   // The stop of a stagnating restarted GMRES (Solvers::StagnationControl;
   // doc/theory/04-solver.md, 4.5.1), GMRES(10) to 1e-8 within 1 000
   // iterations: on the cyclic shift of 200 unknowns with b = e_0 every
@@ -1032,6 +1120,7 @@ main(int argc, char **argv)
   gmres_restart();
   stagnation_control();
   direct_fallback();
+  cholesky();
   threaded_amg();
   nonzero_operator();
   rigid_body();

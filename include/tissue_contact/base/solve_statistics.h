@@ -37,5 +37,9 @@ namespace TissueContact
     /** Linear solves of Type = automatic that GMRES+AMG did not converge
      * and the direct solver did (LinearSolver::solve()). */
     unsigned int direct_fallbacks = 0;
+    /** Linear solves of Direct solver = Cholesky made by LU instead (a
+     * tangent not symmetric positive definite, or one of the solves after
+     * such a one; LinearSolver::cholesky_fallbacks()). */
+    unsigned int cholesky_fallbacks = 0;
   };
 } // namespace TissueContact

@@ -2,6 +2,7 @@
 
 #include <tissue_contact/base/nonzero_matrix.h>
 #include <tissue_contact/solvers/amg_preconditioner.h>
+#include <tissue_contact/solvers/cholesky_factorization.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/sparse_matrix.h>
@@ -24,7 +25,9 @@ namespace TissueContact
      *   Newton method of dissertation sec. 4.7.3;
      * - "direct": sparse LU, by UMFPACK or by MUMPS (through Trilinos
      *   Amesos; multifrontal, faster on large 3D meshes, see the entry
-     *   "Direct solver");
+     *   "Direct solver"), or sparse Cholesky by CHOLMOD where the tangent
+     *   is symmetric positive definite (CholeskyFactorization; LU by
+     *   UMFPACK where it is not);
      * - "GMRES+AMG": GMRES preconditioned by Trilinos ML aggregation
      *   algebraic multigrid (plain or smoothed aggregation) with the three
      *   translations, or the six rigid-body modes (translations and
@@ -204,10 +207,22 @@ namespace TissueContact
         return n_direct_fallbacks;
       }
 
+      /** The solves of Direct solver = Cholesky factorized by LU instead:
+       * those whose tangent was not symmetric positive definite, and
+       * those after such a one that did not try (solve_direct()), since
+       * construction. */
+      unsigned int
+      cholesky_fallbacks() const
+      {
+        return n_cholesky_fallbacks;
+      }
+
       const Parameters parameters;
 
     private:
-      /** Sparse LU (UMFPACK or MUMPS, as Direct solver says). */
+      /** Sparse LU (UMFPACK or MUMPS) or Cholesky (CHOLMOD, LU where the
+       * tangent is not symmetric positive definite), as Direct solver
+       * says. */
       void
       solve_direct(const SparseMatrix<double> &K,
                    Vector<double>             &x,
@@ -249,6 +264,14 @@ namespace TissueContact
        * sec. 4.5.1). */
       static constexpr double setup_cost         = 50.;
       mutable unsigned int    n_direct_fallbacks = 0;
+      /** Direct solver = Cholesky: the factorization, whose symbolic
+       * analysis serves the next tangents of the same pattern. */
+      mutable std::unique_ptr<CholeskyFactorization> cholesky;
+      mutable unsigned int                           n_cholesky_fallbacks = 0;
+      /** Solves that go to the LU without a Cholesky attempt, and how many
+       * the next failure makes skip (doubled by each failure in a row). */
+      mutable unsigned int cholesky_skips   = 0;
+      mutable unsigned int cholesky_backoff = 0;
     };
   } // namespace Solvers
 } // namespace TissueContact
