@@ -523,35 +523,31 @@ namespace TissueContact
             distinct[p] = distinct_dofs(*list[p]);
         },
         256);
+      // the rows' incidences, counted once: they split the rows among the
+      // threads and place each row's pairs in its thread's list
+      const std::vector<std::size_t> incidences =
+        row_incidences(distinct, R.size());
       const unsigned int                         n_parts = n_row_ranges();
       const std::vector<types::global_dof_index> bounds =
-        insertion_row_ranges(distinct, R.size(), n_parts);
+        insertion_row_ranges(incidences, n_parts);
       parallel::apply_to_subranges(
         0u,
         n_parts,
         [&](const unsigned int part_begin, const unsigned int part_end) {
           for (unsigned int part = part_begin; part < part_end; ++part)
-            add_rows(list, distinct, bounds[part], bounds[part + 1], R, K);
+            add_rows(
+              list, distinct, incidences, bounds[part], bounds[part + 1], R, K);
         },
         1);
       pair_results.clear();
     }
 
 
-    std::vector<types::global_dof_index>
-    BodyContactAssembler::insertion_row_ranges(
+    std::vector<std::size_t>
+    BodyContactAssembler::row_incidences(
       const std::vector<DistinctDofs> &distinct,
-      const types::global_dof_index    n_rows,
-      const unsigned int               n_parts) const
+      const types::global_dof_index    n_rows)
     {
-      if (n_parts == 1)
-        return {0, n_rows};
-      // a part's work is about the number of (pair, row) incidences in its
-      // rows: ranges of equal row counts gave the first of two threads 60 %
-      // of them on the full knee's first 8 increments (contact sits where
-      // the numbering puts it) and two thirds of the insertion's time (the
-      // whole flexion gained nothing measurable; doc/theory/05-contact.md
-      // sec. 7)
       std::vector<std::size_t> incidences(n_rows + 1, 0);
       for (const DistinctDofs &d : distinct)
         for (unsigned int s = 0; s < d.n; ++s)
@@ -559,6 +555,23 @@ namespace TissueContact
       std::partial_sum(incidences.begin(),
                        incidences.end(),
                        incidences.begin());
+      return incidences;
+    }
+
+
+    std::vector<types::global_dof_index>
+    BodyContactAssembler::insertion_row_ranges(
+      const std::vector<std::size_t> &incidences,
+      const unsigned int              n_parts)
+    {
+      if (n_parts == 1)
+        return {0, incidences.size() - 1};
+      // a part's work is about the number of (pair, row) incidences in its
+      // rows: ranges of equal row counts gave the first of two threads 60 %
+      // of them on the full knee's first 8 increments (contact sits where
+      // the numbering puts it) and two thirds of the insertion's time (the
+      // whole flexion gained nothing measurable; doc/theory/05-contact.md
+      // sec. 7)
       return TissueContact::balanced_row_ranges(incidences, n_parts);
     }
 
@@ -589,19 +602,17 @@ namespace TissueContact
     void
     BodyContactAssembler::add_rows(const std::vector<const PairResult *> &list,
                                    const std::vector<DistinctDofs> &distinct,
+                                   const std::vector<std::size_t>  &incidences,
                                    const types::global_dof_index    lo,
                                    const types::global_dof_index    hi,
                                    Vector<double>                  &R,
                                    SparseMatrix<double>            *K) const
     {
       // the (pair, distinct DoF) incidences of each row of the range, in
-      // the list's order
-      std::vector<unsigned int> start(hi - lo + 1, 0);
-      for (const DistinctDofs &d : distinct)
-        for (unsigned int s = 0; s < d.n; ++s)
-          if (d.dofs[s] >= lo && d.dofs[s] < hi)
-            ++start[d.dofs[s] - lo + 1];
-      std::partial_sum(start.begin(), start.end(), start.begin());
+      // the list's order: row r's from start[r - lo] on
+      std::vector<unsigned int> start(hi - lo + 1);
+      for (types::global_dof_index r = lo; r <= hi; ++r)
+        start[r - lo] = incidences[r] - incidences[lo];
       std::vector<std::pair<unsigned int, unsigned int>> incidence(
         start.back());
       {

@@ -426,14 +426,19 @@ namespace TissueContact
         unsigned int                            n = 0;
       };
 
-      /** Boundaries 0 = b_0 <= ... <= b_n = @p n_rows of @p n_parts ranges
-       * of rows with about equal shares of the (pair, row) incidences of
-       * the pairs' @p distinct DoFs: part p adds the rows b_p ... b_{p+1} -
-       * 1 (one part: all rows, without counting). */
-      std::vector<types::global_dof_index>
-      insertion_row_ranges(const std::vector<DistinctDofs> &distinct,
-                           const types::global_dof_index    n_rows,
-                           const unsigned int               n_parts) const;
+      /** The (pair, row) incidences of the pairs' @p distinct DoFs
+       * counted per row and summed: entry r is the number of incidences in
+       * the rows before r (@p n_rows + 1 entries). */
+      static std::vector<std::size_t>
+      row_incidences(const std::vector<DistinctDofs> &distinct,
+                     const types::global_dof_index    n_rows);
+
+      /** Boundaries 0 = b_0 <= ... <= b_n of @p n_parts ranges of the rows
+       * of @p incidences (row_incidences()) with about equal shares of
+       * them: part p adds the rows b_p ... b_{p+1} - 1. */
+      static std::vector<types::global_dof_index>
+      insertion_row_ranges(const std::vector<std::size_t> &incidences,
+                           const unsigned int              n_parts);
 
       /** The distinct DoFs of pair @p r. */
       DistinctDofs
@@ -442,10 +447,11 @@ namespace TissueContact
       /** Add the gradients and (if @p K) Hessians of the pairs @p list to
        * the rows lo .. hi - 1 of @p R and @p K, row by row: each row's
        * entries found once, then every pair's additions to it in the
-       * list's order. */
+       * list's order; @p incidences: row_incidences(). */
       void
       add_rows(const std::vector<const PairResult *> &list,
                const std::vector<DistinctDofs>       &distinct,
+               const std::vector<std::size_t>        &incidences,
                const types::global_dof_index          lo,
                const types::global_dof_index          hi,
                Vector<double>                        &R,
