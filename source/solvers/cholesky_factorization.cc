@@ -27,6 +27,12 @@ namespace TissueContact
         cholmod_l_start(&common);
         // failures are reported by factorize()'s result, not printed
         common.print = 0;
+        // the simplicial factorization where the flops per entry of the
+        // factor are below 150, the supernodal one (dense blocks in BLAS)
+        // above: CHOLMOD's default switch, 40, made a 375-unknown tangent's
+        // factorization four times slower than the simplicial one
+        // (doc/theory/04-solver.md sec. 4.5.3)
+        common.supernodal_switch = 150.;
       }
 
       ~Implementation()
