@@ -52,7 +52,8 @@ namespace TissueContact
         "couplings, from the vertex volume term or contact pairs, counts its "
         "unknowns w^2 times), "
         "GMRES+Jacobi (inexact GMRES with diagonal preconditioning, "
-        "dissertation 4.7.3), direct (sparse LU, UMFPACK or MUMPS) or "
+        "dissertation 4.7.3), direct (sparse Cholesky or LU, see Direct "
+        "solver) or "
         "GMRES+AMG (Trilinos ML algebraic multigrid; the entries below set "
         "its tolerance and hierarchy; automatic uses it with Forcing term = "
         "Eisenstat-Walker, Reuse preconditioner = true and AMG rotations = "
@@ -66,19 +67,21 @@ namespace TissueContact
       prm.add_parameter(
         "Direct solver",
         direct_solver,
-        "For Type = direct: UMFPACK (deal.II's SparseDirectUMFPACK) or MUMPS "
-        "(the multifrontal solver through Trilinos Amesos: the same solution "
-        "to rounding, 1.1-1.9 times faster on the meshes measured in "
-        "doc/theory/04-solver.md sec. 4.5; a tangent it cannot factorize "
-        "cuts the increment back) or Cholesky (CHOLMOD's supernodal "
-        "Cholesky factorization where the tangent is symmetric positive "
-        "definite, its symbolic analysis kept while the sparsity pattern "
-        "stays, LU by UMFPACK where the tangent is not: 2-3 times faster "
-        "than UMFPACK per solve on clamped P1 cubes of 20 000-47 000 "
-        "unknowns and a quarter less linear-solve time on the sagging bars, "
-        "but no gain on contact scenes whose tangents are mostly indefinite, "
-        "such as the knee; the run summary counts the solves made by LU; "
-        "doc/theory/04-solver.md sec. 4.5.3).",
+        "For Type = direct (and the direct steps of Type = automatic): "
+        "Cholesky (CHOLMOD's sparse Cholesky factorization where the tangent "
+        "is symmetric positive definite, its symbolic analysis kept while "
+        "the sparsity pattern stays, and UMFPACK's LU where the tangent is "
+        "not; the run summary counts those solves), UMFPACK (deal.II's "
+        "SparseDirectUMFPACK, sparse LU for every tangent) or MUMPS (the "
+        "multifrontal LU through Trilinos Amesos, 1.1-1.9 times faster than "
+        "UMFPACK on the meshes measured in doc/theory/04-solver.md sec. 4.5; "
+        "a tangent it cannot factorize cuts the increment back). Measured "
+        "(sec. 4.5.3): Cholesky took a third to a quarter of UMFPACK's "
+        "linear-solve time on the scenes whose tangents stay definite (the "
+        "sagging bars, the falling block, the coiling snake) and 2-3 times "
+        "less per solve on clamped P1 cubes of 1 000 and 20 000-47 000 "
+        "unknowns; on contact scenes with mostly indefinite tangents (the "
+        "pinched tube, the knee) it costs what UMFPACK costs.",
         Patterns::Selection("UMFPACK|MUMPS|Cholesky"));
       prm.add_parameter(
         "AMG rotations",

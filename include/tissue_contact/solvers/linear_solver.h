@@ -23,11 +23,10 @@ namespace TissueContact
      * - "GMRES+Jacobi": GMRES with diagonal preconditioning stopped at a
      *   relative residual (0.1 by default) or an iteration cap, the inexact
      *   Newton method of dissertation sec. 4.7.3;
-     * - "direct": sparse LU, by UMFPACK or by MUMPS (through Trilinos
-     *   Amesos; multifrontal, faster on large 3D meshes, see the entry
-     *   "Direct solver"), or sparse Cholesky by CHOLMOD where the tangent
-     *   is symmetric positive definite (CholeskyFactorization; LU by
-     *   UMFPACK where it is not);
+     * - "direct": sparse Cholesky by CHOLMOD where the tangent is
+     *   symmetric positive definite (CholeskyFactorization; LU by UMFPACK
+     *   where it is not), or sparse LU by UMFPACK or by MUMPS (through
+     *   Trilinos Amesos; multifrontal), as the entry "Direct solver" says;
      * - "GMRES+AMG": GMRES preconditioned by Trilinos ML aggregation
      *   algebraic multigrid (plain or smoothed aggregation) with the three
      *   translations, or the six rigid-body modes (translations and
@@ -45,7 +44,7 @@ namespace TissueContact
         /** "automatic" (resolved(): direct below automatic_limit unknowns,
          * GMRES+AMG from there), "direct", "GMRES+AMG" or "GMRES+Jacobi". */
         std::string  type               = "automatic";
-        std::string  direct_solver      = "UMFPACK";
+        std::string  direct_solver      = "Cholesky";
         double       relative_tolerance = 0.1;
         unsigned int max_iterations     = 1000;
         /** Krylov vectors GMRES keeps before it restarts; 0: chosen by
