@@ -611,6 +611,29 @@ namespace
             << (A.residual(r, x, b) <= 1e-8 * b.l2_norm()) << std::endl;
   }
 
+  // @p W: @p A with zeros stored in more places of its pattern (@p
+  // pattern: A's and the couplings of every i with i + 7, cyclically), as a
+  // contact pattern that kept the couplings of pairs no longer in contact
+  void
+  with_zeros_stored(const SparseMatrix<double> &A,
+                    SparsityPattern            &pattern,
+                    SparseMatrix<double>       &W)
+  {
+    const unsigned int     n = A.m();
+    DynamicSparsityPattern dsp(n, n);
+    for (const auto &e : A)
+      dsp.add(e.row(), e.column());
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        dsp.add(i, (i + 7) % n);
+        dsp.add((i + 7) % n, i);
+      }
+    pattern.copy_from(dsp);
+    W.reinit(pattern);
+    for (const auto &e : A)
+      W.set(e.row(), e.column(), e.value());
+  }
+
   // The direct fallback of GMRES+AMG chosen by Type = automatic
   // (doc/theory/04-solver.md, 4.5.1) on the 100 x 100 Laplacian shifted into
   // indefiniteness (minus 2 I: eigenvalues between -2 and 6), with GMRES
@@ -629,19 +652,9 @@ namespace
     SparseMatrix<double> A = laplacian(1.);
     for (unsigned int i = 0; i < n; ++i)
       A.diag_element(i) -= 2.;
-    DynamicSparsityPattern dsp(n, n);
-    for (const auto &e : A)
-      dsp.add(e.row(), e.column());
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        dsp.add(i, (i + 7) % n);
-        dsp.add((i + 7) % n, i);
-      }
-    SparsityPattern wide_pattern;
-    wide_pattern.copy_from(dsp);
-    SparseMatrix<double> W(wide_pattern);
-    for (const auto &e : A)
-      W.set(e.row(), e.column(), e.value());
+    SparsityPattern      wide_pattern;
+    SparseMatrix<double> W;
+    with_zeros_stored(A, wide_pattern, W);
     Vector<double> b(n), x(n), y(n), z(n), z_wide(n);
     b = 1.;
     Solvers::LinearSolver::Parameters p;
@@ -691,19 +704,9 @@ namespace
       C.diag_element(i) -= 2.;
     U.set(5, 4, U(5, 4) * (1. + 1e-9));
     S.set(5, 4, S(5, 4) * (1. + 1e-15));
-    DynamicSparsityPattern dsp(n, n);
-    for (const auto &e : A)
-      dsp.add(e.row(), e.column());
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        dsp.add(i, (i + 7) % n);
-        dsp.add((i + 7) % n, i);
-      }
-    SparsityPattern wide_pattern;
-    wide_pattern.copy_from(dsp);
-    SparseMatrix<double> W(wide_pattern);
-    for (const auto &e : A)
-      W.set(e.row(), e.column(), e.value());
+    SparsityPattern      wide_pattern;
+    SparseMatrix<double> W;
+    with_zeros_stored(A, wide_pattern, W);
 
     Vector<double> b(n), x(n), z(n);
     for (unsigned int i = 0; i < n; ++i)
