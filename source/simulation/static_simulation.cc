@@ -76,12 +76,11 @@ namespace TissueContact
     if (linear.type == "direct" && nonlinear_problem.n_dofs() > 20000)
       out << "  warning: a direct solver at " << nonlinear_problem.n_dofs()
           << " unknowns costs seconds per Newton iteration (measured on two "
-             "cores: UMFPACK 1.7 s at 27 783 unknowns, 5.4-6.1 s on the 29 706 "
-             "of the knee with its contact couplings); Linear solver/Type = "
-             "GMRES+AMG (0.24 s at 27 783) or Direct solver = MUMPS (1.1 s) "
-             "may be faster, and where the tangent stays positive definite "
-             "(no contact) Direct solver = Cholesky (half UMFPACK's time on "
-             "a Mooney-Rivlin cube of 27 783 unknowns)\n";
+             "cores at 27 783 unknowns: UMFPACK's LU 1.7 s, MUMPS' 1.1 s, the "
+             "Cholesky factorization of a positive definite tangent about "
+             "half UMFPACK's time; 5.4-6.1 s by LU on the 29 706 of the knee "
+             "with its contact couplings); Linear solver/Type = GMRES+AMG "
+             "(0.24 s at 27 783) may be faster\n";
     if (contact)
       out << "  contact: " << contact->n_triangles() << " contact triangles, "
           << p.contact.obstacles.size() << " obstacle(s), "

@@ -13,14 +13,15 @@ namespace TissueContact
 
     /**
      * The sparse Cholesky factorization @f$K = LL^T@f$ of a symmetric
-     * positive definite tangent by CHOLMOD (SuiteSparse's supernodal
-     * Cholesky, the dense blocks in BLAS), its symbolic analysis kept for
-     * the next tangents of the same sparsity pattern
-     * (doc/theory/04-solver.md sec. 4.5.3).
+     * positive definite tangent by CHOLMOD (SuiteSparse's; simplicial, or
+     * supernodal with the dense blocks in BLAS from 150 flops per entry of
+     * the factor on), its symbolic analysis kept for the next tangents of
+     * the same sparsity pattern (doc/theory/04-solver.md sec. 4.5.3).
      *
      * A hyperelastic tangent with penalty contact is the Hessian of a
      * potential, so it is symmetric; it is positive definite at a stable
-     * equilibrium and wherever the quasi-viscosity dominates, and may be
+     * equilibrium and wherever the quasi-viscosity or a mass term
+     * dominates, and may be
      * indefinite elsewhere. factorize() therefore checks both and says
      * whether it succeeded; the caller factorizes by LU where it did not.
      * Symmetry: @f$|Kv - K^Tv| \le 10^{-12}(|Kv| + |K^Tv|)@f$ for a fixed

@@ -268,7 +268,8 @@ namespace TissueContact
       mutable std::unique_ptr<CholeskyFactorization> cholesky;
       mutable unsigned int                           n_cholesky_fallbacks = 0;
       /** Solves that go to the LU without a Cholesky attempt, and how many
-       * the next failure makes skip (doubled by each failure in a row). */
+       * the next failure makes skip (1, doubled by each failure in a row up
+       * to 8, cleared by a success). */
       mutable unsigned int cholesky_skips   = 0;
       mutable unsigned int cholesky_backoff = 0;
     };
