@@ -509,11 +509,13 @@ namespace TissueContact
       catch (const SolveFailed &e)
         {
           last_iterations = statistics.newton_iterations;
+          last_lu_solves  = statistics.cholesky_fallbacks;
           std::ostringstream msg;
           msg << "at t = " << s.t << " with step " << dt << ": " << e.what();
           throw SolveFailed(msg.str());
         }
       last_iterations = statistics.newton_iterations;
+      last_lu_solves  = statistics.cholesky_fallbacks;
       Vector<double> v, a;
       effective.kinematics(u, v, a);
       s.u.swap(u);

@@ -139,7 +139,7 @@ namespace TissueContact
     std::ofstream csv =
       open_time_history(columns, csv_name, restart != nullptr);
 
-    unsigned int step = 0, cutbacks = 0, iterations = 0;
+    unsigned int step = 0, cutbacks = 0, iterations = 0, lu_solves = 0;
     double       dt = ti.time_step, next_output = ti.output_interval;
     double       dissipated = 0., t_start = 0.;
     if (restart != nullptr)
@@ -155,9 +155,12 @@ namespace TissueContact
         step         = restart->step;
         cutbacks     = restart->scalar("cutbacks");
         iterations   = restart->scalar("newton_iterations");
-        dt           = restart->scalar("dt");
-        next_output  = restart->scalar("next_output");
-        dissipated   = restart->scalar("dissipated");
+        // absent from checkpoints written before it was counted
+        if (restart->scalars.count("lu_solves") > 0)
+          lu_solves = restart->scalar("lu_solves");
+        dt          = restart->scalar("dt");
+        next_output = restart->scalar("next_output");
+        dissipated  = restart->scalar("dissipated");
         integrator.restore_blow_up_reference(
           {restart->scalar("reference_energy"),
            restart->scalar("first_step_done") != 0.});
@@ -180,6 +183,7 @@ namespace TissueContact
             const double          taken   = integrator.step(s, request, next);
             cutbacks += (taken < request);
             iterations += integrator.last_iterations;
+            lu_solves += integrator.last_lu_solves;
             dt = std::max(next, taken);
             ++step;
             const double        kinetic = integrator.kinetic_energy(s);
@@ -240,6 +244,7 @@ namespace TissueContact
                                           {"dt", dt},
                                           {"cutbacks", cutbacks},
                                           {"newton_iterations", iterations},
+                                          {"lu_solves", lu_solves},
                                           {"next_output", next_output},
                                           {"dissipated", dissipated},
                                           {"reference_energy", reference.first},
@@ -271,6 +276,11 @@ namespace TissueContact
     nonlinear_problem.set_timer(nullptr);
     out << "Reached t = " << s.t << " in " << step << " steps (" << cutbacks
         << " cut back), " << iterations << " Newton iterations"
+        << (lu_solves > 0 ? ", " + std::to_string(lu_solves) +
+                              " linear solves by LU instead of Cholesky "
+                              "(tangents not symmetric positive definite, "
+                              "and the solves right after them)" :
+                            std::string())
         << (p.output.print_timing ?
               ", " + std::to_string(timer.wall_time()) + " s wall time" :
               std::string())

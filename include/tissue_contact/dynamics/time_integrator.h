@@ -187,6 +187,9 @@ namespace TissueContact
 
       /** Newton iterations of the last implicit step. */
       unsigned int last_iterations = 0;
+      /** Its linear solves made by LU instead of Cholesky (Linear
+       * solver/Direct solver = Cholesky; SolveStatistics). */
+      unsigned int last_lu_solves = 0;
 
       /** While set, assembly and linear solves are timed as the sections
        * "assembly" and "linear solve" of @p timer (null: not timed). */
