@@ -276,11 +276,7 @@ namespace TissueContact
     nonlinear_problem.set_timer(nullptr);
     out << "Reached t = " << s.t << " in " << step << " steps (" << cutbacks
         << " cut back), " << iterations << " Newton iterations"
-        << (lu_solves > 0 ? ", " + std::to_string(lu_solves) +
-                              " linear solves by LU instead of Cholesky "
-                              "(tangents not symmetric positive definite, "
-                              "and the solves right after them)" :
-                            std::string())
+        << cholesky_fallback_summary(lu_solves)
         << (p.output.print_timing ?
               ", " + std::to_string(timer.wall_time()) + " s wall time" :
               std::string())

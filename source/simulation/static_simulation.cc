@@ -257,13 +257,7 @@ namespace TissueContact
                 " linear solves by the direct solver where GMRES+AMG did not "
                 "converge" :
               std::string())
-        << (statistics.cholesky_fallbacks > 0 ?
-              ", " + std::to_string(statistics.cholesky_fallbacks) +
-                " linear solves by LU instead of Cholesky (tangents not "
-                "symmetric positive definite, and the solves right after "
-                "them)" :
-              std::string())
-        << "\n"
+        << cholesky_fallback_summary(statistics.cholesky_fallbacks) << "\n"
         << "  max |u_i| = " << u_max
         << ", min J = " << assembler.min_jacobian(u_fe) << "\n"
         << "  convergence log: " << csv << "\n";

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <string>
+
 namespace TissueContact
 {
   /** One Newton iteration, as shown on screen and in the CSV log
@@ -42,4 +44,16 @@ namespace TissueContact
      * such a one; LinearSolver::cholesky_fallbacks()). */
     unsigned int cholesky_fallbacks = 0;
   };
+
+  /** The run summary's clause for @p n linear solves made by LU instead of
+   * Cholesky (SolveStatistics::cholesky_fallbacks), empty for none. */
+  inline std::string
+  cholesky_fallback_summary(const unsigned int n)
+  {
+    return n == 0 ? std::string() :
+                    ", " + std::to_string(n) +
+                      " linear solves by LU instead of Cholesky (tangents not "
+                      "symmetric positive definite, and the solves right "
+                      "after them)";
+  }
 } // namespace TissueContact
