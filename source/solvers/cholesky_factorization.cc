@@ -19,7 +19,9 @@ namespace TissueContact
       cholmod_sparse *A = nullptr;
       cholmod_factor *L = nullptr;
       /** whether L holds the factor of the last tangent */
-      bool         factorized = false;
+      bool factorized = false;
+      /** whether the last tangent passed the symmetry check */
+      bool         symmetric  = false;
       unsigned int n_analyses = 0;
 
       Implementation()
@@ -82,7 +84,8 @@ namespace TissueContact
       cholmod_common &c    = impl.common;
       impl.factorized      = false;
       AssertThrow(K.m() == K.n(), ExcNotQuadratic());
-      if (!is_symmetric(K))
+      impl.symmetric = is_symmetric(K);
+      if (!impl.symmetric)
         return false;
 
       // the upper triangle: deal.II stores a square matrix's diagonal
@@ -167,6 +170,18 @@ namespace TissueContact
                   ExcMessage("Cholesky: out of memory for the factor; use "
                              "Type = GMRES+AMG"));
       impl.factorized = c.status == CHOLMOD_OK && impl.L->minor == n;
+      // the supernodal factorization is L L^T and stops at the first pivot
+      // that is not positive; the simplicial one is L D L^T and stops only
+      // at a zero pivot, so an indefinite K passes with negative entries in
+      // D, which holds K's inertia (Sylvester): refused here
+      if (impl.factorized && !impl.L->is_super && !impl.L->is_ll)
+        {
+          const auto *const Lp =
+            static_cast<const SuiteSparse_long *>(impl.L->p);
+          const auto *const Lx = static_cast<const double *>(impl.L->x);
+          for (std::size_t j = 0; j < n && impl.factorized; ++j)
+            impl.factorized = Lx[Lp[j]] > 0.;
+        }
       return impl.factorized;
     }
 
@@ -193,6 +208,13 @@ namespace TissueContact
       const double *s = static_cast<const double *>(solution->x);
       std::copy(s, s + b.size(), x.begin());
       cholmod_l_free_dense(&solution, &c);
+    }
+
+
+    bool
+    CholeskyFactorization::was_symmetric() const
+    {
+      return implementation->symmetric;
     }
 
 

@@ -16,6 +16,14 @@ namespace TissueContact
   {
     namespace
     {
+      /** The shifts sigma = 10^e of a definite step (doc/theory/
+       * 04-solver.md sec. 4.3.1): from 10^min_shift (a change of the
+       * step at the Newton tolerance's level) to 10^max_shift (the
+       * diagonal a hundred times over: a step of a hundredth of a
+       * Jacobi step's length). */
+      constexpr int min_shift = -6;
+      constexpr int max_shift = 2;
+
       /**
        * The step's constraint du = 0 on the prescribed DoFs, as
        * MatrixTools::apply_boundary_values() with zero values and
@@ -244,6 +252,9 @@ namespace TissueContact
                      std::numeric_limits<double>::epsilon() * length_scale *
                        (((i * 2654435761u) >> 7) & 1u ? 1. : -1.);
       double last_step = 0.;
+      // the exponent of the last definite step's shift in this
+      // increment (below min_shift: none)
+      int definite_shift = min_shift - 1;
       // the energy at u when the line search computed it at the accepted
       // step (the start of the next line search), NaN otherwise
       double E_at_u = std::numeric_limits<double>::quiet_NaN();
@@ -393,9 +404,21 @@ namespace TissueContact
             diagonal = n > gap.size() ? diagonal / (n - gap.size()) : 0.;
             if (!(diagonal > 0.))
               diagonal = 1.;
+            // and, for the Cholesky factorization, a positive one: the row
+            // is decoupled and its right-hand side zero, so the sign changes
+            // no entry of the step, but a contact pair on a rigid body's
+            // node can make the assembled one negative, and every tangent
+            // would be refused (12 such rows on the full knee after one
+            // increment; doc/theory/04-solver.md sec. 4.3.1)
+            const bool cholesky = linear_solver->factorizes_by_cholesky(n);
             for (const auto &g : gap)
-              if (std::abs(K.diag_element(g.first)) < 1e-12 * diagonal)
-                K.diag_element(g.first) = diagonal;
+              {
+                double &d = K.diag_element(g.first);
+                if (std::abs(d) < 1e-12 * diagonal)
+                  d = diagonal;
+                else if (cholesky)
+                  d = std::abs(d);
+              }
             // du = lift + v: the lift carries the prescribed values, v (zero
             // there) solves K v = -R - K lift on the free rows. An iterative
             // solver's relative tolerance then measures the free rows only:
@@ -416,7 +439,61 @@ namespace TissueContact
               linear_solver->forcing(r, r_previous, eta_previous, tolerance);
             const unsigned int fallbacks = linear_solver->direct_fallbacks();
             const unsigned int lu_solves = linear_solver->cholesky_fallbacks();
-            info.linear_iterations = linear_solver->solve(K, du, rhs, eta);
+            // the free diagonal |K_ii| (0 on the prescribed rows), the
+            // scale of a tangent shift, and the shift in K now
+            Vector<double> d0;
+            double         sigma    = 0.;
+            const auto     shift_to = [&](const double next) {
+              if (next == sigma)
+                return;
+              if (d0.size() == 0)
+                {
+                  d0.reinit(n);
+                  for (types::global_dof_index i = 0; i < n; ++i)
+                    d0[i] = prescribed[i] ? 0. : std::abs(K.diag_element(i));
+                }
+              for (types::global_dof_index i = 0; i < n; ++i)
+                K.diag_element(i) += (next - sigma) * d0[i];
+              sigma = next;
+            };
+            // with the Cholesky factorization a step along which the
+            // energy falls comes from a positive definite matrix: the
+            // tangent if it is one, else the tangent with its free
+            // diagonal shifted by sigma |K_ii|, sigma = 10^e from one
+            // decade below the last shift of this increment (or from
+            // 10^min_shift) up (doc/theory/04-solver.md sec. 4.3.1)
+            bool definite = false;
+            if (parameters.energy_line_search && gap_norm == 0. && cholesky)
+              {
+                info.linear_iterations = 1;
+                // the tangent itself first (e below min_shift)
+                int e = min_shift - 1;
+                while (!definite && e <= max_shift)
+                  {
+                    shift_to(e < min_shift ? 0. : std::pow(10., e));
+                    const auto result =
+                      linear_solver->solve_definite(K, du, rhs);
+                    if (result == LinearSolver::Definiteness::not_symmetric)
+                      break;
+                    definite =
+                      result == LinearSolver::Definiteness::positive_definite;
+                    if (definite)
+                      {
+                        definite_shift = e;
+                        statistics.tangent_shifts += (sigma > 0.);
+                      }
+                    else
+                      e = e < min_shift ?
+                            std::max(min_shift, definite_shift - 1) :
+                            e + 1;
+                  }
+                // not symmetric, or not positive definite even so: the
+                // tangent's own step by LU, and the shifts below
+                if (!definite)
+                  shift_to(0.);
+              }
+            if (!definite)
+              info.linear_iterations = linear_solver->solve(K, du, rhs, eta);
             du += lift;
             r_previous   = r;
             eta_previous = eta;
@@ -425,6 +502,7 @@ namespace TissueContact
             // free diagonal by sigma |K_ii|, sigma = 1e-4, 1e-3, ..., 1,
             // until du descends (a Levenberg-Marquardt shift; doc/theory/
             // 04-solver.md sec. 4.3). Past that, the residual merit below.
+            // (a definite step descends but for rounding: then too)
             if (parameters.energy_line_search && gap_norm == 0.)
               {
                 const auto slope = [&]() {
@@ -434,26 +512,18 @@ namespace TissueContact
                       d += R[i] * du[i];
                   return d;
                 };
-                if (slope() >= 0.)
+                for (int e = -4; e <= 0 && slope() >= 0.; ++e)
                   {
-                    Vector<double> d0(n);
-                    for (types::global_dof_index i = 0; i < n; ++i)
-                      d0[i] = prescribed[i] ? 0. : std::abs(K.diag_element(i));
-                    double sigma = 0.;
-                    for (int e = -4; e <= 0 && slope() >= 0.; ++e)
-                      {
-                        const double next = std::pow(10., e);
-                        for (types::global_dof_index i = 0; i < n; ++i)
-                          K.diag_element(i) += (next - sigma) * d0[i];
-                        sigma = next;
-                        // from the last solve's du: the shifted system is
-                        // near it (on the full knee a quarter of the GMRES
-                        // iterations were these solves from zero; doc/theory/
-                        // 04-solver.md sec. 4.5.1)
-                        info.linear_iterations +=
-                          linear_solver->solve(K, du, rhs, eta, true);
-                        ++statistics.tangent_shifts;
-                      }
+                    if (std::pow(10., e) <= sigma)
+                      continue;
+                    shift_to(std::pow(10., e));
+                    // from the last solve's du: the shifted system is
+                    // near it (on the full knee a quarter of the GMRES
+                    // iterations were these solves from zero; doc/theory/
+                    // 04-solver.md sec. 4.5.1)
+                    info.linear_iterations +=
+                      linear_solver->solve(K, du, rhs, eta, true);
+                    ++statistics.tangent_shifts;
                   }
               }
             statistics.direct_fallbacks +=

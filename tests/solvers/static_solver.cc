@@ -365,18 +365,35 @@ namespace
               << ")" << std::endl;
     }
 
+    // without halvings: the LU's Newton steps (UMFPACK) need one and fail
+    // with the line search's message; the Cholesky default's definite
+    // steps (doc/theory/04-solver.md sec. 4.3.1) need none
+    const std::string no_halvings =
+      one_step + "subsection Newton\n set Maximum line search halvings = 0\n"
+                 "end\n";
     try
       {
         std::ostringstream log2;
-        solve(twist(one_step + "subsection Newton\n"
-                               " set Maximum line search halvings = 0\nend\n"),
+        solve(twist(no_halvings + "subsection Linear solver\n"
+                                  " set Direct solver = UMFPACK\nend\n"),
               log2);
-        deallog << "without halvings: converged (unexpected)" << std::endl;
+        deallog << "without halvings, UMFPACK: converged (unexpected)"
+                << std::endl;
       }
     catch (const std::exception &e)
       {
-        deallog << "without halvings: error: " << error_message(e) << std::endl;
+        deallog << "without halvings, UMFPACK: error: " << error_message(e)
+                << std::endl;
       }
+    {
+      std::ostringstream log2;
+      solve(twist(no_halvings), log2);
+      unsigned int its = 0;
+      for (const auto &r : rows(log2.str()))
+        its += (r.second > 0.);
+      deallog << "without halvings, Cholesky: converged, " << its
+              << " Newton iterations" << std::endl;
+    }
   }
 
   void
@@ -728,9 +745,24 @@ namespace
         cholesky.solve(x, b);
         largest = std::max(largest, difference(*M));
       }
+    // an indefinite matrix small enough for the simplicial L D L^T, which
+    // meets no zero pivot: refused by the signs of D (the 1D Laplacian
+    // 2 - 1/2 on its diagonal, smallest eigenvalue 2 - 2 cos(pi / 11) - 1/2)
+    DynamicSparsityPattern tridiagonal(10, 10);
+    for (unsigned int i = 0; i < 10; ++i)
+      for (unsigned int j = (i > 0 ? i - 1 : 0); j < std::min(i + 2, 10u); ++j)
+        tridiagonal.add(i, j);
+    SparsityPattern small_pattern;
+    small_pattern.copy_from(tridiagonal);
+    SparseMatrix<double> T(small_pattern);
+    for (unsigned int i = 0; i < 10; ++i)
+      for (unsigned int j = (i > 0 ? i - 1 : 0); j < std::min(i + 2, 10u); ++j)
+        T.set(i, j, i == j ? 1.5 : -1.);
     accepted << "analyses " << cholesky.n_analyses() << "; indefinite "
-             << cholesky.factorize(C) << ", unsymmetric by 1e-9 "
-             << cholesky.factorize(U) << ", by 1e-15 " << cholesky.factorize(S);
+             << cholesky.factorize(C) << " and " << cholesky.factorize(T)
+             << " (by L D L^T), unsymmetric by 1e-9 " << cholesky.factorize(U)
+             << " (seen as such: " << !cholesky.was_symmetric()
+             << "), by 1e-15 " << cholesky.factorize(S);
     deallog << "Cholesky: factorized A, B (same pattern), W (wider): "
             << accepted.str() << "; largest difference from UMFPACK "
             << error_bound(largest, -13) << std::endl;

@@ -56,6 +56,11 @@ namespace TissueContact
       void
       solve(Vector<double> &x, const Vector<double> &b) const;
 
+      /** Whether the matrix of the last factorize() call passed the
+       * symmetry check (so that a refusal means: not positive definite). */
+      bool
+      was_symmetric() const;
+
       /** How many factorize() calls computed a new symbolic analysis. */
       unsigned int
       n_analyses() const;

@@ -216,6 +216,34 @@ namespace TissueContact
         return n_cholesky_fallbacks;
       }
 
+      /** Whether solve() factorizes an @p n_dofs x @p n_dofs tangent by
+       * Cholesky where it can (Type = direct, or automatic choosing it, and
+       * Direct solver = Cholesky): then solve_definite() tests it. */
+      bool
+      factorizes_by_cholesky(const types::global_dof_index n_dofs) const
+      {
+        const Parameters p = parameters.resolved(n_dofs);
+        return p.type == "direct" && p.direct_solver == "Cholesky";
+      }
+
+      /** What solve_definite() found. */
+      enum class Definiteness
+      {
+        positive_definite,
+        not_positive_definite,
+        not_symmetric
+      };
+
+      /** Solve @f$K x = b@f$ by the Cholesky factorization if @p K is
+       * symmetric positive definite, else leave @p x as it is and say
+       * which test failed: the Newton solver's definite steps
+       * (doc/theory/04-solver.md sec. 4.3.1). Independent of solve()'s
+       * back-off, and not counted in cholesky_fallbacks(). */
+      Definiteness
+      solve_definite(const SparseMatrix<double> &K,
+                     Vector<double>             &x,
+                     const Vector<double>       &b) const;
+
       const Parameters parameters;
 
     private:
