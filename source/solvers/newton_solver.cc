@@ -439,21 +439,31 @@ namespace TissueContact
               linear_solver->forcing(r, r_previous, eta_previous, tolerance);
             const unsigned int fallbacks = linear_solver->direct_fallbacks();
             const unsigned int lu_solves = linear_solver->cholesky_fallbacks();
-            // the free diagonal |K_ii| (0 on the prescribed rows), the
-            // scale of a tangent shift, and the shift in K now
-            Vector<double> d0;
-            double         sigma    = 0.;
-            const auto     shift_to = [&](const double next) {
+            // the diagonal before any shift, its free entries' magnitudes
+            // |K_ii| (0 on the prescribed rows: a shift's scale), and the
+            // shift in K now
+            Vector<double> K0, d0;
+            double         sigma = 0.;
+            // the shift set to next (exactly, and changed by the
+            // difference where it is added)
+            const auto shift_to = [&](const double next, const bool set) {
               if (next == sigma)
                 return;
-              if (d0.size() == 0)
+              if (K0.size() == 0)
                 {
+                  K0.reinit(n);
                   d0.reinit(n);
                   for (types::global_dof_index i = 0; i < n; ++i)
-                    d0[i] = prescribed[i] ? 0. : std::abs(K.diag_element(i));
+                    {
+                      K0[i] = K.diag_element(i);
+                      d0[i] = prescribed[i] ? 0. : std::abs(K0[i]);
+                    }
                 }
               for (types::global_dof_index i = 0; i < n; ++i)
-                K.diag_element(i) += (next - sigma) * d0[i];
+                if (set)
+                  K.diag_element(i) = K0[i] + next * d0[i];
+                else
+                  K.diag_element(i) += (next - sigma) * d0[i];
               sigma = next;
             };
             // with the Cholesky factorization a step along which the
@@ -470,7 +480,10 @@ namespace TissueContact
                 int e = min_shift - 1;
                 while (!definite && e <= max_shift)
                   {
-                    shift_to(e < min_shift ? 0. : std::pow(10., e));
+                    // set, not added: a sum of shifts that should cancel
+                    // a negative entry exactly left a pivot of 1e-16 (the
+                    // double well of solvers/static_solver)
+                    shift_to(e < min_shift ? 0. : std::pow(10., e), true);
                     const auto result =
                       linear_solver->solve_definite(K, du, rhs);
                     if (result == LinearSolver::Definiteness::not_symmetric)
@@ -490,7 +503,7 @@ namespace TissueContact
                 // not symmetric, or not positive definite even so: the
                 // tangent's own step by LU, and the shifts below
                 if (!definite)
-                  shift_to(0.);
+                  shift_to(0., true);
               }
             if (!definite)
               info.linear_iterations = linear_solver->solve(K, du, rhs, eta);
@@ -516,7 +529,7 @@ namespace TissueContact
                   {
                     if (std::pow(10., e) <= sigma)
                       continue;
-                    shift_to(std::pow(10., e));
+                    shift_to(std::pow(10., e), false);
                     // from the last solve's du: the shifted system is
                     // near it (on the full knee a quarter of the GMRES
                     // iterations were these solves from zero; doc/theory/

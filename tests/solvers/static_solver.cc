@@ -34,6 +34,7 @@
 #include <deal.II/lac/trilinos_precondition.h>
 
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 using namespace dealii;
@@ -326,6 +327,118 @@ namespace
   private:
     Problem &problem;
   };
+
+  /** A double well in three uncoupled unknowns, Pi(x) = sum_i (a_i x_i^2 / 2
+   * + x_i^4 / 4) - lambda f.x with a = (-1, 1, 1): at x = 0 the tangent
+   * diag(a_i + 3 x_i^2) = diag(-1, 1, 1) is indefinite, and x_0 = 0 is the
+   * top of the well along x_0. */
+  class DoubleWell : public Solvers::NonlinearProblem
+  {
+  public:
+    DoubleWell()
+    {
+      DynamicSparsityPattern dsp(3, 3);
+      for (unsigned int i = 0; i < 3; ++i)
+        dsp.add(i, i);
+      pattern.copy_from(dsp);
+    }
+    types::global_dof_index
+    n_dofs() const override
+    {
+      return 3;
+    }
+    const SparsityPattern &
+    sparsity_pattern() const override
+    {
+      return pattern;
+    }
+    bool
+    assemble(const Vector<double> &x,
+             const double          l,
+             Vector<double>       &R,
+             SparseMatrix<double> *K) override
+    {
+      for (unsigned int i = 0; i < 3; ++i)
+        {
+          R[i] = a[i] * x[i] + x[i] * x[i] * x[i] - l * f[i];
+          if (K != nullptr)
+            K->set(i, i, a[i] + 3. * x[i] * x[i]);
+        }
+      return true;
+    }
+    double
+    energy(const Vector<double> &x, const double l) const override
+    {
+      double E = 0.;
+      for (unsigned int i = 0; i < 3; ++i)
+        E +=
+          0.5 * a[i] * x[i] * x[i] + 0.25 * std::pow(x[i], 4) - l * f[i] * x[i];
+      return E;
+    }
+    std::map<types::global_dof_index, double>
+    prescribed_values(const double) const override
+    {
+      return {};
+    }
+    double
+    external_force_norm(const double l) const override
+    {
+      return l * std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    }
+    Vector<double>
+    quasi_viscosity_diagonal(const double) const override
+    {
+      return Vector<double>(3);
+    }
+
+    const double a[3] = {-1., 1., 1.};
+    const double f[3] = {0.1, 0.1, 0.1};
+
+  private:
+    SparsityPattern pattern;
+  };
+
+  // The definite steps of the Cholesky factorization (doc/theory/
+  // 04-solver.md sec. 4.3.1) from the top of the double well: the tangent
+  // diag(-1, 1, 1) is refused, and so is it shifted by 10^e |K_ii| up to
+  // e = 0 (diag(0, 2, 2)); e = 1 gives diag(9, 11, 11), and the steps go
+  // down to the well's bottom x_0 = 1.0467 (x^3 - x = 0.1), where the
+  // tangent 3 x_0^2 - 1 is positive: a minimum. UMFPACK's LU takes the
+  // plain Newton steps, which descend as a whole (R.du = -|f|^2 + 2 f_0^2
+  // < 0) but climb along x_0, and converge to x_0 = -0.1010, where the
+  // tangent is negative: a saddle of the energy, an equilibrium no
+  // minimization would stop at.
+  void
+  definite_steps()
+  {
+    for (const std::string direct : {"Cholesky", "UMFPACK"})
+      {
+        DoubleWell                                   problem;
+        Solvers::IncrementalNewtonSolver::Parameters p;
+        p.initial_increment           = 1.;
+        p.linear_solver.direct_solver = direct;
+        Solvers::IncrementalNewtonSolver solver(p);
+        Vector<double>                   x(3);
+        try
+          {
+            const SolveStatistics s = solver.solve(problem, x);
+            deallog << "double well from its top, " << direct
+                    << ": converged, x = " << std::fixed << std::setprecision(4)
+                    << x[0] << " " << x[1] << " " << x[2] << std::defaultfloat
+                    << std::setprecision(6) << ", tangent there "
+                    << (problem.a[0] + 3. * x[0] * x[0] > 0. ? "positive" :
+                                                               "NOT positive")
+                    << ", " << s.newton_iterations << " Newton iterations, "
+                    << s.tangent_shifts << " with a shifted tangent"
+                    << std::endl;
+          }
+        catch (const std::exception &e)
+          {
+            deallog << "double well from its top, " << direct
+                    << ": error: " << error_message(e) << std::endl;
+          }
+      }
+  }
 
   void
   line_search()
@@ -1148,6 +1261,7 @@ main(int argc, char **argv)
   rigid_rotation("neo-Hookean");
   rigid_rotation("linear");
   line_search();
+  definite_steps();
   quadratic_convergence();
   solvers_agree();
   forcing_term();
