@@ -46,27 +46,22 @@ namespace TissueContact
     };
 
 
-    namespace
+    bool
+    is_symmetric(const SparseMatrix<double> &K)
     {
-      /** |K v - K^T v| <= 1e-12 (|K v| + |K^T v|) for a fixed vector v of
-       * pseudo-random entries in [-1, 1]. */
-      bool
-      is_symmetric(const SparseMatrix<double> &K)
-      {
-        Vector<double> v(K.m()), Kv(K.m()), KTv(K.m());
-        std::uint64_t  state = 0x9e3779b97f4a7c15ull;
-        for (double &vi : v)
-          {
-            state = state * 6364136223846793005ull + 1442695040888963407ull;
-            vi    = static_cast<double>(state >> 11) * 0x1.0p-52 - 1.;
-          }
-        K.vmult(Kv, v);
-        K.Tvmult(KTv, v);
-        const double scale = Kv.l2_norm() + KTv.l2_norm();
-        Kv -= KTv;
-        return Kv.l2_norm() <= 1e-12 * scale;
-      }
-    } // namespace
+      Vector<double> v(K.m()), Kv(K.m()), KTv(K.m());
+      std::uint64_t  state = 0x9e3779b97f4a7c15ull;
+      for (double &vi : v)
+        {
+          state = state * 6364136223846793005ull + 1442695040888963407ull;
+          vi    = static_cast<double>(state >> 11) * 0x1.0p-52 - 1.;
+        }
+      K.vmult(Kv, v);
+      K.Tvmult(KTv, v);
+      const double scale = Kv.l2_norm() + KTv.l2_norm();
+      Kv -= KTv;
+      return Kv.l2_norm() <= 1e-12 * scale;
+    }
 
 
     CholeskyFactorization::CholeskyFactorization()

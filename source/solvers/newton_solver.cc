@@ -23,6 +23,14 @@ namespace TissueContact
        * Jacobi step's length). */
       constexpr int min_shift = -6;
       constexpr int max_shift = 2;
+      /** A direction p of curvature p.Kp <= 0 that conjugate gradients met
+       * asks for a shift of at least sigma - p.Kp / p.Dp; the ladder goes
+       * on from the decade that holds this many times that, if it is above
+       * the next rung (doc/theory/04-solver.md sec. 4.3.2: on eight
+       * variants of the coarse knee to 150 degrees, margins of 2 and 10
+       * took 850 and 976 Newton iterations on average, GMRES's steps
+       * 1 076). */
+      constexpr double shift_margin = 2.;
 
       /**
        * The step's constraint du = 0 on the prescribed DoFs, as
@@ -410,13 +418,13 @@ namespace TissueContact
             // node can make the assembled one negative, and every tangent
             // would be refused (12 such rows on the full knee after one
             // increment; doc/theory/04-solver.md sec. 4.3.1)
-            const bool cholesky = linear_solver->factorizes_by_cholesky(n);
+            const bool definite_steps = linear_solver->tests_definiteness(n);
             for (const auto &g : gap)
               {
                 double &d = K.diag_element(g.first);
                 if (std::abs(d) < 1e-12 * diagonal)
                   d = diagonal;
-                else if (cholesky)
+                else if (definite_steps)
                   d = std::abs(d);
               }
             // du = lift + v: the lift carries the prescribed values, v (zero
@@ -443,22 +451,24 @@ namespace TissueContact
             // |K_ii| (0 on the prescribed rows: a shift's scale), and the
             // shift in K now
             Vector<double> K0, d0;
-            double         sigma = 0.;
+            double         sigma     = 0.;
+            const auto     keep_base = [&]() {
+              if (K0.size() > 0)
+                return;
+              K0.reinit(n);
+              d0.reinit(n);
+              for (types::global_dof_index i = 0; i < n; ++i)
+                {
+                  K0[i] = K.diag_element(i);
+                  d0[i] = prescribed[i] ? 0. : std::abs(K0[i]);
+                }
+            };
             // the shift set to next (exactly, and changed by the
             // difference where it is added)
             const auto shift_to = [&](const double next, const bool set) {
               if (next == sigma)
                 return;
-              if (K0.size() == 0)
-                {
-                  K0.reinit(n);
-                  d0.reinit(n);
-                  for (types::global_dof_index i = 0; i < n; ++i)
-                    {
-                      K0[i] = K.diag_element(i);
-                      d0[i] = prescribed[i] ? 0. : std::abs(K0[i]);
-                    }
-                }
+              keep_base();
               for (types::global_dof_index i = 0; i < n; ++i)
                 if (set)
                   K.diag_element(i) = K0[i] + next * d0[i];
@@ -466,47 +476,73 @@ namespace TissueContact
                   K.diag_element(i) += (next - sigma) * d0[i];
               sigma = next;
             };
-            // with the Cholesky factorization a step along which the
-            // energy falls comes from a positive definite matrix: the
-            // tangent if it is one, else the tangent with its free
-            // diagonal shifted by sigma |K_ii|, sigma = 10^e from one
-            // decade below the last shift of this increment (or from
-            // 10^min_shift) up (doc/theory/04-solver.md sec. 4.3.1)
-            bool definite = false;
-            if (parameters.energy_line_search && gap_norm == 0. && cholesky)
+            // where the linear solver tells (the Cholesky factorization,
+            // conjugate gradients with AMG) a step along which the energy
+            // falls comes from a positive definite matrix: the tangent if
+            // it is one, else the tangent with its free diagonal shifted by
+            // sigma |K_ii|, sigma = 10^e from one decade below the last
+            // shift of this increment (or from 10^min_shift) up, past the
+            // shift a direction of negative curvature asks for
+            // (doc/theory/04-solver.md sec. 4.3.1)
+            bool           definite           = false;
+            unsigned int   refused_iterations = 0;
+            Vector<double> direction;
+            if (parameters.energy_line_search && gap_norm == 0. &&
+                definite_steps)
               {
-                info.linear_iterations = 1;
                 // the tangent itself first (e below min_shift)
-                int e = min_shift - 1;
+                int  e                = min_shift - 1;
+                bool symmetry_checked = false;
                 while (!definite && e <= max_shift)
                   {
                     // set, not added: a sum of shifts that should cancel
                     // a negative entry exactly left a pivot of 1e-16 (the
                     // double well of solvers/static_solver)
                     shift_to(e < min_shift ? 0. : std::pow(10., e), true);
-                    const auto result =
-                      linear_solver->solve_definite(K, du, rhs);
+                    unsigned int its;
+                    const auto   result = linear_solver->solve_definite(
+                      K, du, rhs, eta, its, direction, !symmetry_checked);
+                    symmetry_checked = true;
                     if (result == LinearSolver::Definiteness::not_symmetric)
                       break;
                     definite =
                       result == LinearSolver::Definiteness::positive_definite;
                     if (definite)
                       {
-                        definite_shift = e;
+                        info.linear_iterations = its;
+                        definite_shift         = e;
                         statistics.tangent_shifts += (sigma > 0.);
+                        break;
                       }
-                    else
-                      e = e < min_shift ?
-                            std::max(min_shift, definite_shift - 1) :
-                            e + 1;
+                    refused_iterations += its;
+                    e = e < min_shift ?
+                          std::max(min_shift, definite_shift - 1) :
+                          e + 1;
+                    // a direction p with p.(K0 + sigma D)p <= 0: a shift
+                    // sigma' is needed with sigma' > sigma - p.Kp / p.Dp;
+                    // the next is at least shift_margin times that
+                    if (direction.size() == n)
+                      {
+                        keep_base();
+                        Vector<double> Kp(n);
+                        K.vmult(Kp, direction);
+                        double pDp = 0.;
+                        for (types::global_dof_index i = 0; i < n; ++i)
+                          pDp += d0[i] * direction[i] * direction[i];
+                        const double needed = sigma - (direction * Kp) / pDp;
+                        if (pDp > 0. && needed > 0.)
+                          e = std::max<int>(
+                            e, std::ceil(std::log10(shift_margin * needed)));
+                      }
                   }
                 // not symmetric, or not positive definite even so: the
-                // tangent's own step by LU, and the shifts below
+                // tangent's own step by LU or GMRES, and the shifts below
                 if (!definite)
                   shift_to(0., true);
               }
             if (!definite)
               info.linear_iterations = linear_solver->solve(K, du, rhs, eta);
+            info.linear_iterations += refused_iterations;
             du += lift;
             r_previous   = r;
             eta_previous = eta;

@@ -407,16 +407,24 @@ namespace
   // plain Newton steps, which descend as a whole (R.du = -|f|^2 + 2 f_0^2
   // < 0) but climb along x_0, and converge to x_0 = -0.1010, where the
   // tangent is negative: a saddle of the energy, an equilibrium no
-  // minimization would stop at.
+  // minimization would stop at. Conjugate gradients with AMG (Type =
+  // GMRES+AMG, its definite steps; doc/theory/04-solver.md sec. 4.3.2)
+  // refuse the tangent too and reach the bottom as the Cholesky
+  // factorization does (a shifted matrix made singular, a negative
+  // diagonal entry met by sigma = 1, whose coarse level KLU cannot
+  // factorize, refused as well).
   void
   definite_steps()
   {
-    for (const std::string direct : {"Cholesky", "UMFPACK"})
+    for (const std::string direct : {"Cholesky", "UMFPACK", "CG+AMG"})
       {
         DoubleWell                                   problem;
         Solvers::IncrementalNewtonSolver::Parameters p;
-        p.initial_increment           = 1.;
-        p.linear_solver.direct_solver = direct;
+        p.initial_increment = 1.;
+        if (direct == "CG+AMG")
+          p.linear_solver.type = "GMRES+AMG";
+        else
+          p.linear_solver.direct_solver = direct;
         Solvers::IncrementalNewtonSolver solver(p);
         Vector<double>                   x(3);
         try
@@ -809,6 +817,66 @@ namespace
             << ", with zeros stored in more places too: " << (y == z)
             << " (UMFPACK given them rounds otherwise: " << (z_wide != z) << ")"
             << std::endl;
+  }
+
+  // The definiteness test of conjugate gradients with AMG
+  // (LinearSolver::solve_definite(), doc/theory/04-solver.md sec. 4.3.1) on
+  // the 30 x 30 Laplacian, whose eigenvalues are (2 - 2 cos(i pi/31)) +
+  // (2 - 2 cos(j pi/31)), the smallest 0.0205, the next 0.0512: as it is,
+  // solved to the tolerance (1e-8 of |b|); minus 0.03 I (one eigenvalue
+  // negative, -0.0095) refused, with a direction p of curvature p.Kp <= 0
+  // for the right-hand side of ones, which has a component along that
+  // eigenvector; shifted by sigma |K_ii| with sigma ten times the
+  // -p.Kp / p.Dp that direction asks for, accepted and solved; made
+  // unsymmetric by 1e-9 of an entry, refused as such.
+  void
+  definite_cg()
+  {
+    const Laplacian      laplacian(30);
+    const auto           n = laplacian.n;
+    SparseMatrix<double> A = laplacian(1.), B = laplacian(1.);
+    for (unsigned int i = 0; i < n; ++i)
+      B.diag_element(i) -= 0.03;
+    Solvers::LinearSolver::Parameters p;
+    p.type = "GMRES+AMG";
+    const Solvers::LinearSolver solver(p);
+    Vector<double>              b(n), x(n), p_found, r(n);
+    b = 1.;
+    unsigned int its_A, its_B, its_shifted;
+    using D            = Solvers::LinearSolver::Definiteness;
+    const D    found_A = solver.solve_definite(A, x, b, 1e-8, its_A, p_found);
+    const bool solved_A =
+      A.residual(r, x, b) <= 1e-8 * b.l2_norm() && p_found.size() == 0;
+    const D found_B = solver.solve_definite(B, x, b, 1e-8, its_B, p_found);
+    Vector<double> Bp(n);
+    double         curvature = 0., pDp = 0.;
+    if (p_found.size() == n)
+      {
+        B.vmult(Bp, p_found);
+        curvature = p_found * Bp;
+        for (unsigned int i = 0; i < n; ++i)
+          pDp += std::abs(B.diag_element(i)) * p_found[i] * p_found[i];
+      }
+    const double sigma = -10. * curvature / pDp;
+    for (unsigned int i = 0; i < n; ++i)
+      B.diag_element(i) += sigma * std::abs(B.diag_element(i));
+    const D found_shifted =
+      solver.solve_definite(B, x, b, 1e-8, its_shifted, p_found);
+    const bool solved_shifted = B.residual(r, x, b) <= 1e-8 * b.l2_norm();
+    A.set(0, 1, A.el(0, 1) * (1. + 1e-9));
+    const D found_unsymmetric =
+      solver.solve_definite(A, x, b, 1e-8, its_A, p_found);
+    deallog << "definite steps by CG with AMG: the Laplacian positive definite "
+            << (found_A == D::positive_definite) << ", solved " << solved_A
+            << "; minus 0.03 I refused "
+            << (found_B == D::not_positive_definite)
+            << ", with a direction of curvature <= 0: " << (curvature <= 0.)
+            << " (sigma = 10 times its Rayleigh quotient: "
+            << std::setprecision(2) << sigma << std::setprecision(6)
+            << "); shifted by it positive definite "
+            << (found_shifted == D::positive_definite) << ", solved "
+            << solved_shifted << "; unsymmetric by 1e-9 refused as such "
+            << (found_unsymmetric == D::not_symmetric) << std::endl;
   }
 
   // Direct solver = Cholesky (Solvers::CholeskyFactorization; doc/theory/
@@ -1270,6 +1338,7 @@ main(int argc, char **argv)
   stagnation_control();
   direct_fallback();
   cholesky();
+  definite_cg();
   threaded_amg();
   nonzero_operator();
   rigid_body();

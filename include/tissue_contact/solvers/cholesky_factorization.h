@@ -11,6 +11,12 @@ namespace TissueContact
   {
     using namespace dealii;
 
+    /** Whether @p K is symmetric: |K v - K^T v| <= 1e-12 (|K v| + |K^T v|)
+     * for a fixed vector v of pseudo-random entries in [-1, 1]. */
+    bool
+    is_symmetric(const SparseMatrix<double> &K);
+
+
     /**
      * The sparse Cholesky factorization @f$K = LL^T@f$ of a symmetric
      * positive definite tangent by CHOLMOD (SuiteSparse's; simplicial, or

@@ -70,6 +70,13 @@ namespace TissueContact
         std::string forcing_term = "fixed";
         /** Keep the AMG hierarchy from one solve to the next. */
         bool reuse_preconditioner = false;
+
+        /** With Type = GMRES+AMG (chosen or automatic): the Newton steps of
+         * the energy line search by conjugate gradients with AMG, which
+         * tell a tangent that is not positive definite; it is then shifted
+         * (doc/theory/04-solver.md sec. 4.3.2). False: GMRES for them as
+         * for every other solve. */
+        bool definite_steps = true;
         /** Solve directly where GMRES+AMG does not converge (set by
          * resolved() for Type = automatic; LinearSolver::solve()). */
         bool direct_fallback = false;
@@ -234,15 +241,40 @@ namespace TissueContact
         not_symmetric
       };
 
-      /** Solve @f$K x = b@f$ by the Cholesky factorization if @p K is
-       * symmetric positive definite, else leave @p x as it is and say
-       * which test failed: the Newton solver's definite steps
-       * (doc/theory/04-solver.md sec. 4.3.1). Independent of solve()'s
-       * back-off, and not counted in cholesky_fallbacks(). */
+      /** Solve @f$K x = b@f$ if @p K is symmetric positive definite, else
+       * leave @p x undefined and say which test failed: the Newton
+       * solver's definite steps (doc/theory/04-solver.md sec. 4.3.1). By
+       * the Cholesky factorization (factorizes_by_cholesky(); independent
+       * of solve()'s back-off, and not counted in cholesky_fallbacks()),
+       * or by conjugate gradients with the AMG preconditioner to
+       * @p relative_tolerance (of |b|), which stop at the first search
+       * direction p with p.Kp not positive (then kept in @p direction,
+       * else @p direction is left empty) or preconditioned residual r.z
+       * not positive. @p iterations: the CG iterations spent, or 1 for a
+       * factorization that was solved with. @p test_symmetry: false where
+       * the caller knows K is symmetric (a shift of the diagonal of a
+       * matrix that was). */
       Definiteness
       solve_definite(const SparseMatrix<double> &K,
                      Vector<double>             &x,
-                     const Vector<double>       &b) const;
+                     const Vector<double>       &b,
+                     const double                relative_tolerance,
+                     unsigned int               &iterations,
+                     Vector<double>             &direction,
+                     const bool                  test_symmetry = true) const;
+
+      /** Whether solve_definite() can tell if an @p n_dofs x @p n_dofs
+       * tangent is positive definite: by the Cholesky factorization
+       * (factorizes_by_cholesky()), or by conjugate gradients with AMG
+       * (Type = GMRES+AMG, or automatic choosing it, with Definite steps =
+       * true). */
+      bool
+      tests_definiteness(const types::global_dof_index n_dofs) const
+      {
+        const Parameters p = parameters.resolved(n_dofs);
+        return factorizes_by_cholesky(n_dofs) ||
+               (p.type == "GMRES+AMG" && p.definite_steps);
+      }
 
       const Parameters parameters;
 
@@ -254,6 +286,14 @@ namespace TissueContact
       solve_direct(const SparseMatrix<double> &K,
                    Vector<double>             &x,
                    const Vector<double>       &b) const;
+
+      /** Solve by the direct solver where GMRES+AMG, chosen by Type =
+       * automatic, did not converge with a fresh hierarchy: on the
+       * tangent's nonzeros, counted in direct_fallbacks(). */
+      void
+      solve_direct_fallback(const SparseMatrix<double> &K,
+                            Vector<double>             &x,
+                            const Vector<double>       &b) const;
 
       /** The near-null space, mode after mode (ML's layout). */
       std::vector<double> null_space;
@@ -270,7 +310,9 @@ namespace TissueContact
                 const Vector<double>       &b,
                 const double                target,
                 const bool                  stop_on_stagnation,
-                bool                       &converged) const;
+                bool                       &converged,
+                bool                       *negative_curvature = nullptr,
+                Vector<double>             *direction          = nullptr) const;
 
       /** The tangent's nonzeros, GMRES's operator: the same products at
        * 40 % of the cost on the full knee (0.16 against 0.41 ms). */
