@@ -263,6 +263,11 @@ namespace TissueContact
       // the exponent of the last definite step's shift in this
       // increment (below min_shift: none)
       int definite_shift = min_shift - 1;
+      // whether the definite steps' symmetry test (conjugate gradients)
+      // has passed in this increment: the tangent of one scene is
+      // symmetric (an energy's Hessian) or not (a follower load) at every
+      // iterate, and the test costs a product with K^T (serial)
+      bool symmetry_tested = false, unsymmetric = false;
       // the energy at u when the line search computed it at the accepted
       // step (the start of the next line search), NaN otherwise
       double E_at_u = std::numeric_limits<double>::quiet_NaN();
@@ -488,11 +493,10 @@ namespace TissueContact
             unsigned int   refused_iterations = 0;
             Vector<double> direction;
             if (parameters.energy_line_search && gap_norm == 0. &&
-                definite_steps)
+                definite_steps && !unsymmetric)
               {
                 // the tangent itself first (e below min_shift)
-                int  e                = min_shift - 1;
-                bool symmetry_checked = false;
+                int e = min_shift - 1;
                 while (!definite && e <= max_shift)
                   {
                     // set, not added: a sum of shifts that should cancel
@@ -501,10 +505,13 @@ namespace TissueContact
                     shift_to(e < min_shift ? 0. : std::pow(10., e), true);
                     unsigned int its;
                     const auto   result = linear_solver->solve_definite(
-                      K, du, rhs, eta, its, direction, !symmetry_checked);
-                    symmetry_checked = true;
+                      K, du, rhs, eta, its, direction, !symmetry_tested);
+                    symmetry_tested = true;
                     if (result == LinearSolver::Definiteness::not_symmetric)
-                      break;
+                      {
+                        unsymmetric = true;
+                        break;
+                      }
                     definite =
                       result == LinearSolver::Definiteness::positive_definite;
                     if (definite)
