@@ -417,12 +417,13 @@ namespace TissueContact
             diagonal = n > gap.size() ? diagonal / (n - gap.size()) : 0.;
             if (!(diagonal > 0.))
               diagonal = 1.;
-            // and, for the Cholesky factorization, a positive one: the row
-            // is decoupled and its right-hand side zero, so the sign changes
-            // no entry of the step, but a contact pair on a rigid body's
-            // node can make the assembled one negative, and every tangent
-            // would be refused (12 such rows on the full knee after one
-            // increment; doc/theory/04-solver.md sec. 4.3.1)
+            // and, for the definite steps (the Cholesky factorization or
+            // conjugate gradients), a positive one: the row is decoupled and
+            // its right-hand side zero, so the sign changes no entry of the
+            // step, but a contact pair on a rigid body's node can make the
+            // assembled one negative, and every tangent would be refused (12
+            // such rows on the full knee after one increment; doc/theory/
+            // 04-solver.md sec. 4.3.1)
             const bool definite_steps = linear_solver->tests_definiteness(n);
             for (const auto &g : gap)
               {
@@ -488,7 +489,7 @@ namespace TissueContact
             // sigma |K_ii|, sigma = 10^e from one decade below the last
             // shift of this increment (or from 10^min_shift) up, past the
             // shift a direction of negative curvature asks for
-            // (doc/theory/04-solver.md sec. 4.3.1)
+            // (doc/theory/04-solver.md sec. 4.3.1, 4.3.2)
             bool           definite           = false;
             unsigned int   refused_iterations = 0;
             Vector<double> direction;
