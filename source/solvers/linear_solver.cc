@@ -135,12 +135,7 @@ namespace TissueContact
         "sec. 4.5.2): plain took the full knee (prm/knee_flexion.prm, which "
         "sets it) from 464 s to 404-413 s, its linear solve from 237 s to "
         "173-175 s; on the knee-scale tube (prm/knee_tube.prm) plain was 7 % "
-        "slower (one thread, side by side), on the falling rods the same. "
-        "With plain, a kept hierarchy (Reuse preconditioner) is refreshed "
-        "for each matrix: its aggregates and transfers kept, its operators "
-        "the Galerkin products of the new matrix (doc/theory/04-solver.md "
-        "sec. 4.5.1; the full knee 194 s instead of 233-244 s, 23 111 "
-        "instead of 43 595 linear iterations).",
+        "slower (one thread, side by side), on the falling rods the same.",
         Patterns::Selection("plain|smoothed"));
       prm.add_parameter(
         "Forcing term",
@@ -175,9 +170,7 @@ namespace TissueContact
         "the next (across Newton iterations, increments, time steps and "
         "new contact couplings) until the GMRES iterations it has cost "
         "beyond those it needed when it was built add up to a new one's "
-        "setup (false: a new hierarchy for every solve); with AMG "
-        "aggregation = plain its operators are refreshed for each matrix. "
-        "Measured: with "
+        "setup (false: a new hierarchy for every solve). Measured: with "
         "Forcing term = Eisenstat-Walker 30 % less linear-solve time on "
         "the quick knee-scale tube, and 21 hierarchies instead of 116 on "
         "the full one (prm/knee_tube.prm, "
@@ -271,25 +264,15 @@ namespace TissueContact
       // preconditioner of this one
       if (amg && amg->m() != K.m())
         amg.reset();
-      // plain aggregation: a kept hierarchy is refreshed for each matrix,
-      // its finest level the nonzeros the Krylov method multiplies with.
-      // Smoothed aggregation's prolongators hold a row's whole
-      // neighbourhood, which makes the Galerkin products cost more than
-      // the iterations they save: its hierarchies are kept as built
-      // (doc/theory/04-solver.md sec. 4.5.1)
-      const bool smoothed = parameters.amg_aggregation == "smoothed";
       if (!amg)
         {
           amg = std::make_unique<AMGPreconditioner>();
           amg->initialize(K,
                           null_space,
                           null_space_dimension,
-                          smoothed,
-                          smoothed ? nullptr : &nonzeros);
+                          parameters.amg_aggregation == "smoothed");
           fresh_rate = -1.;
         }
-      else if (!smoothed)
-        amg->refresh(K, &nonzeros);
       // fresh: no solve has measured this hierarchy's rate yet (a solve
       // that starts at its target measures nothing)
       const bool fresh = fresh_rate < 0.;
@@ -353,9 +336,8 @@ namespace TissueContact
           if (*negative_curvature)
             {
               // a hierarchy built from this tangent is none for the
-              // shifted one, unless it is refreshed for it; a kept one (of
-              // a definite tangent) is
-              if (fresh && smoothed)
+              // shifted one; a kept one (of a definite tangent) is
+              if (fresh)
                 amg.reset();
               return control.last_step();
             }

@@ -46,9 +46,8 @@ namespace TissueContact
      * @f]
      * the preconditioner is @f$V_0@f$. This is the V-cycle ML runs, with
      * every product, smoothing step and transfer on the threads. The
-     * operator is fixed between initialize() and refresh() calls (it uses
-     * the copies, not later matrices), so a Krylov method may keep it
-     * across systems.
+     * operator is fixed between initialize() calls (it uses the copies,
+     * not later matrices), so a Krylov method may keep it across systems.
      */
     class AMGPreconditioner
     {
@@ -62,29 +61,12 @@ namespace TissueContact
        * smoothed by damped Jacobi (ML's default, damping factor 4/3);
        * without, the tentative ones as they are (plain aggregation: sparser
        * coarse operators, a cheaper setup and cycle, more iterations;
-       * doc/theory/04-solver.md sec. 4.5.2). @p A_nonzeros, if given, is
-       * A's nonzeros (NonzeroMatrix::copy_from(A)), which the finest level
-       * then uses instead of a copy of its own: it must stay unchanged
-       * until the next initialize() or refresh() and outlive the
-       * hierarchy. */
+       * doc/theory/04-solver.md sec. 4.5.2). */
       void
       initialize(const SparseMatrix<double> &A,
                  const std::vector<double>  &null_space,
                  const unsigned int          null_space_dimension,
-                 const bool                  smoothed_aggregation,
-                 const NonzeroMatrix        *A_nonzeros = nullptr);
-
-      /** The hierarchy for the matrix @p A (of the size it was built
-       * for), on the aggregates and transfers it was built with: every
-       * level's operator anew, @f$A_l = R_l A_{l-1} P_l@f$ from
-       * @f$A_0 = A@f$ without its stored zeros, and with it the smoothers
-       * and the coarsest factorization. About a fifth of initialize()'s
-       * cost; the aggregates of a tangent a few Newton iterations old serve
-       * the current one nearly as well as its own (doc/theory/04-solver.md
-       * sec. 4.5.1). @p A_nonzeros: as for initialize(). */
-      void
-      refresh(const SparseMatrix<double> &A,
-              const NonzeroMatrix        *A_nonzeros = nullptr);
+                 const bool                  smoothed_aggregation);
 
       /** @p x = the V-cycle applied to @p b. */
       void
@@ -94,7 +76,7 @@ namespace TissueContact
       types::global_dof_index
       m() const
       {
-        return n_rows;
+        return levels.empty() ? 0 : levels[0]->A.m();
       }
 
       /** Levels of the hierarchy, the finest included. */
@@ -103,17 +85,6 @@ namespace TissueContact
       {
         return levels.size();
       }
-
-      /** A sparse matrix's rows one after the other, without zeros: row
-       * i's entries are rows_begin[i] ... rows_begin[i + 1] - 1 of
-       * @p column (ascending) and @p value. */
-      struct CompressedRows
-      {
-        std::vector<std::size_t>             rows_begin;
-        std::vector<types::global_dof_index> column;
-        std::vector<double>                  value;
-        unsigned int                         n_columns = 0;
-      };
 
     private:
       using Smoother = PreconditionChebyshev<NonzeroMatrix,
@@ -127,14 +98,9 @@ namespace TissueContact
        * (Amesos), ML's own coarse solver. */
       struct Level
       {
-        /** its operator's nonzeros: op, which is A or a copy kept
-         * elsewhere */
-        NonzeroMatrix        A;
-        const NonzeroMatrix *op = nullptr;
-        SparsityPattern      P_pattern, R_pattern;
-        SparseMatrix<double> P, R;
-        /** P and R again, for the Galerkin products of refresh() */
-        CompressedRows                        P_rows, R_rows;
+        NonzeroMatrix                         A;
+        SparsityPattern                       P_pattern, R_pattern;
+        SparseMatrix<double>                  P, R;
         Smoother                              smoother;
         std::unique_ptr<Epetra_MpiComm>       comm;
         std::unique_ptr<Epetra_Map>           map;
@@ -145,15 +111,6 @@ namespace TissueContact
          * correction from below */
         mutable Vector<double> b, x, residual, correction;
       };
-
-      /** Level @p l's operator from @p matrix (A itself for l = 0): its
-       * nonzeros and smoother, or on the coarsest level its
-       * factorization; @p nonzeros, if given, the matrix's nonzeros,
-       * used instead of a copy. */
-      void
-      set_operator(const unsigned int          l,
-                   const SparseMatrix<double> &matrix,
-                   const NonzeroMatrix        *nonzeros = nullptr);
 
       /** @p x = A_l^{-1} @p b on the coarsest level @p level. */
       static void
@@ -168,8 +125,6 @@ namespace TissueContact
             const Vector<double> &b) const;
 
       std::vector<std::unique_ptr<Level>> levels;
-      /** Rows of the finest level. */
-      types::global_dof_index n_rows = 0;
     };
   } // namespace Solvers
 } // namespace TissueContact
