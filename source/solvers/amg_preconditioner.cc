@@ -1,6 +1,7 @@
 #include <tissue_contact/base/exceptions.h>
 #include <tissue_contact/solvers/amg_preconditioner.h>
 
+#include <deal.II/base/parallel.h>
 #include <deal.II/lac/trilinos_precondition.h>
 
 #include <Amesos.h>
@@ -9,8 +10,12 @@
 #include <Teuchos_ParameterList.hpp>
 #include <ml_MultiLevelPreconditioner.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
+#include <tuple>
+#include <utility>
 
 namespace TissueContact
 {
@@ -18,6 +23,38 @@ namespace TissueContact
   {
     namespace
     {
+      /** @p matrix (@p m x @p n, and its @p pattern) with the rows given
+       * one after the other: row i's @p row_length[i] entries, their
+       * columns ascending in @p column and values in @p value. */
+      void
+      make_matrix(const unsigned int                          m,
+                  const unsigned int                          n,
+                  const std::vector<unsigned int>            &row_length,
+                  const std::vector<types::global_dof_index> &column,
+                  const std::vector<double>                  &value,
+                  SparsityPattern                            &pattern,
+                  SparseMatrix<double>                       &matrix)
+      {
+        // a square pattern stores each row's diagonal, present or not
+        std::vector<unsigned int> capacity(row_length);
+        if (m == n)
+          for (unsigned int &c : capacity)
+            ++c;
+        pattern.reinit(m, n, capacity);
+        std::size_t k = 0;
+        for (unsigned int i = 0; i < m; k += row_length[i], ++i)
+          pattern.add_entries(i,
+                              column.begin() + k,
+                              column.begin() + k + row_length[i],
+                              true);
+        pattern.compress();
+        matrix.reinit(pattern);
+        k = 0;
+        for (unsigned int i = 0; i < m; k += row_length[i], ++i)
+          matrix.set(i, row_length[i], column.data() + k, value.data() + k);
+      }
+
+
       /** The entries of one of ML's operators (a level's matrix, a
        * prolongator or a restriction; one process: its local indices are
        * the global ones) as a deal.II matrix, without its zeros. */
@@ -54,22 +91,194 @@ namespace TissueContact
                   ++row_length[i];
                 }
           }
-        // a square pattern stores each row's diagonal, present or not
-        std::vector<unsigned int> capacity(row_length);
-        if (m == n)
-          for (unsigned int &c : capacity)
-            ++c;
-        pattern.reinit(m, n, capacity);
-        std::size_t k = 0;
-        for (int i = 0; i < m; k += row_length[i], ++i)
-          pattern.add_entries(i,
-                              column.begin() + k,
-                              column.begin() + k + row_length[i]);
-        pattern.compress();
-        matrix.reinit(pattern);
-        k = 0;
-        for (int i = 0; i < m; k += row_length[i], ++i)
-          matrix.set(i, row_length[i], column.data() + k, value.data() + k);
+        make_matrix(m, n, row_length, column, value, pattern, matrix);
+      }
+
+
+      using CompressedRows = AMGPreconditioner::CompressedRows;
+
+
+      /** The nonzeros of @p B as compressed rows. */
+      CompressedRows
+      compressed_rows(const SparseMatrix<double> &B)
+      {
+        CompressedRows rows;
+        rows.n_columns = B.n();
+        rows.rows_begin.push_back(0);
+        for (unsigned int i = 0; i < B.m(); ++i)
+          {
+            std::vector<std::pair<types::global_dof_index, double>> row;
+            for (auto b = B.begin(i); b != B.end(i); ++b)
+              if (b->value() != 0.)
+                row.emplace_back(b->column(), b->value());
+            std::sort(row.begin(), row.end());
+            for (const auto &[j, v] : row)
+              {
+                rows.column.push_back(j);
+                rows.value.push_back(v);
+              }
+            rows.rows_begin.push_back(rows.column.size());
+          }
+        return rows;
+      }
+
+
+      /** The product A @p B without the stored zeros of either, on the
+       * threads, where A's m rows come in units of @p rows_per_unit
+       * consecutive rows (the last may be cut short at m): @p entries(u,
+       * f) calls f(j, a) for the unit's entries, a[r] the entry in column
+       * j of its row r. A unit's rows share B's rows, read once for all of
+       * them. Each entry is summed in the order @p entries gives, whatever
+       * the number of threads. */
+      template <unsigned int rows_per_unit, typename Entries>
+      CompressedRows
+      sparse_product(const unsigned int    m,
+                     const Entries        &entries,
+                     const CompressedRows &B)
+      {
+        const unsigned int n       = B.n_columns;
+        const unsigned int n_units = (m + rows_per_unit - 1) / rows_per_unit;
+        // the units in blocks, each block's rows gathered on its own and
+        // put one after the other at the end
+        const unsigned int n_blocks = std::min(64u, std::max(1u, n_units / 32));
+        const auto         first_row = [&](const unsigned int block) {
+          return std::min<unsigned int>(m,
+                                        rows_per_unit * (std::size_t(block) *
+                                                         n_units / n_blocks));
+        };
+        std::vector<CompressedRows> part(n_blocks);
+        std::vector<std::size_t>    row_length(m);
+        parallel::apply_to_subranges(
+          0u,
+          n_blocks,
+          [&](const unsigned int first, const unsigned int last) {
+            // the unit's rows of the product, dense, and their columns
+            std::vector<std::array<double, rows_per_unit>> sum(n);
+            std::vector<unsigned int>                      seen(n, 0);
+            std::vector<types::global_dof_index>           columns;
+            unsigned int                                   stamp = 0;
+            for (unsigned int block = first; block < last; ++block)
+              for (unsigned int u = first_row(block) / rows_per_unit;
+                   rows_per_unit * u < first_row(block + 1);
+                   ++u)
+                {
+                  ++stamp;
+                  columns.clear();
+                  entries(u,
+                          [&](const types::global_dof_index            j,
+                              const std::array<double, rows_per_unit> &a) {
+                            for (std::size_t q = B.rows_begin[j];
+                                 q < B.rows_begin[j + 1];
+                                 ++q)
+                              {
+                                const auto k = B.column[q];
+                                if (seen[k] != stamp)
+                                  {
+                                    seen[k] = stamp;
+                                    sum[k].fill(0.);
+                                    columns.push_back(k);
+                                  }
+                                for (unsigned int r = 0; r < rows_per_unit; ++r)
+                                  sum[k][r] += a[r] * B.value[q];
+                              }
+                          });
+                  std::sort(columns.begin(), columns.end());
+                  for (unsigned int r = 0;
+                       r < rows_per_unit && rows_per_unit * u + r < m;
+                       ++r)
+                    {
+                      std::size_t length = 0;
+                      for (const auto k : columns)
+                        if (sum[k][r] != 0.)
+                          {
+                            part[block].column.push_back(k);
+                            part[block].value.push_back(sum[k][r]);
+                            ++length;
+                          }
+                      row_length[rows_per_unit * u + r] = length;
+                    }
+                }
+          },
+          1);
+        CompressedRows product;
+        product.n_columns = n;
+        product.rows_begin.resize(m + 1);
+        product.rows_begin[0] = 0;
+        for (unsigned int i = 0; i < m; ++i)
+          product.rows_begin[i + 1] = product.rows_begin[i] + row_length[i];
+        product.column.resize(product.rows_begin[m]);
+        product.value.resize(product.rows_begin[m]);
+        for (unsigned int block = 0; block < n_blocks; ++block)
+          {
+            const std::size_t start = product.rows_begin[first_row(block)];
+            std::copy(part[block].column.begin(),
+                      part[block].column.end(),
+                      product.column.begin() + start);
+            std::copy(part[block].value.begin(),
+                      part[block].value.end(),
+                      product.value.begin() + start);
+          }
+        return product;
+      }
+
+
+      /** The Galerkin product @p R @p A @p P (A's nonzeros, in groups of
+       * three rows) as a deal.II matrix with its @p pattern. */
+      void
+      galerkin_product(const CompressedRows &R,
+                       const NonzeroMatrix  &A,
+                       const CompressedRows &P,
+                       SparsityPattern      &pattern,
+                       SparseMatrix<double> &matrix)
+      {
+        const unsigned int m  = A.m();
+        const auto         AP = sparse_product<3>(
+          m,
+          [&](const types::global_dof_index g, const auto &f) {
+            // the three diagonals, then the other columns ascending
+            for (unsigned int r = 0; r < 3 && 3 * g + r < m; ++r)
+              {
+                std::array<double, 3> a{};
+                a[r] = A.diag_element(3 * g + r);
+                f(3 * g + r, a);
+              }
+            for (std::size_t k = A.group_begin(g); k < A.group_end(g); ++k)
+              {
+                const double *v = A.values_of(k);
+                f(A.column_of(k), {{v[0], v[1], v[2]}});
+              }
+          },
+          P);
+        // R's rows six at a time (an aggregate's rows under six near-null
+        // space vectors share their columns), their columns merged
+        const unsigned int n_c = R.rows_begin.size() - 1;
+        const auto         RAP = sparse_product<6>(
+          n_c,
+          [&](const types::global_dof_index u, const auto &f) {
+            std::vector<
+              std::tuple<types::global_dof_index, unsigned int, double>>
+              entries;
+            for (unsigned int r = 0; r < 6 && 6 * u + r < n_c; ++r)
+              for (std::size_t q = R.rows_begin[6 * u + r];
+                   q < R.rows_begin[6 * u + r + 1];
+                   ++q)
+                entries.emplace_back(R.column[q], r, R.value[q]);
+            std::sort(entries.begin(), entries.end());
+            for (std::size_t q = 0; q < entries.size();)
+              {
+                const auto            j = std::get<0>(entries[q]);
+                std::array<double, 6> a{};
+                for (; q < entries.size() && std::get<0>(entries[q]) == j; ++q)
+                  a[std::get<1>(entries[q])] = std::get<2>(entries[q]);
+                f(j, a);
+              }
+          },
+          AP);
+        std::vector<unsigned int> row_length(n_c);
+        for (unsigned int i = 0; i < n_c; ++i)
+          row_length[i] = RAP.rows_begin[i + 1] - RAP.rows_begin[i];
+        make_matrix(
+          n_c, P.n_columns, row_length, RAP.column, RAP.value, pattern, matrix);
       }
 
       /** The nonzeros of @p A as an Epetra matrix for ML (one process),
@@ -125,7 +334,12 @@ namespace TissueContact
                                   const unsigned int null_space_dimension,
                                   const bool         smoothed_aggregation)
     {
-      levels.clear();
+      grids.clear();
+      operators[0].clear();
+      operators[1].clear();
+      current  = 0;
+      accepted = -1;
+      n_rows   = A.m();
       // ML's hierarchy of the nonzeros (doc/theory/04-solver.md
       // sec. 4.5.2), with the project's settings; its smoothers and coarse
       // solver are the cycle's below, not ML's
@@ -166,92 +380,149 @@ namespace TissueContact
                              "finest level up"));
       const unsigned int n = ml_levels->ML_num_actual_levels;
 
-      // each level's operator, transfers and smoother: Chebyshev of degree
-      // 2 on the Jacobi-scaled matrix over [lambda_max / 10, lambda_max]
-      // (ML's "smoother: Chebyshev alpha" = 10). The scaling by |a_ii| and
-      // the power iteration keep the smoother finite on the indefinite
-      // tangents of deep contact (rows with a_ii < 0), where a Lanczos
-      // estimate with the signed diagonal returned NaN on tangents of the
-      // full knee
-      const auto make_smoother = [](Level &level) {
-        Smoother::AdditionalData data;
-        data.degree              = 2;
-        data.smoothing_range     = 10.;
-        data.eig_cg_n_iterations = 10;
-        data.eigenvalue_algorithm =
-          Smoother::AdditionalData::EigenvalueAlgorithm::power_iteration;
-        data.preconditioner =
-          std::make_shared<DiagonalMatrix<Vector<double>>>();
-        Vector<double> &inverse_diagonal = data.preconditioner->get_vector();
-        inverse_diagonal.reinit(level.A.m());
-        for (types::global_dof_index i = 0; i < level.A.m(); ++i)
-          {
-            const double a      = std::abs(level.A.diag_element(i));
-            inverse_diagonal[i] = (a > 0. && std::isfinite(a)) ? 1. / a : 1.;
-          }
-        level.smoother.initialize(level.A, data);
-      };
       for (unsigned int l = 0; l < n; ++l)
         {
-          levels.push_back(std::make_unique<Level>());
-          Level &level = *levels.back();
+          grids.push_back(std::make_unique<Grid>());
+          operators[0].push_back(std::make_unique<Level>());
+        }
+      for (unsigned int l = 0; l < n; ++l)
+        {
+          Grid &grid = *grids[l];
           // the finest level's nonzeros from A itself, the coarser ones
           // from ML's Galerkin products
           SparsityPattern      level_pattern;
           SparseMatrix<double> level_matrix;
+          const unsigned int   rows_above = l > 0 ? grids[l - 1]->b.size() : 0;
           if (l > 0)
             {
               read_ml_operator(&ml_levels->Amat[l],
                                level_pattern,
                                level_matrix);
-              read_ml_operator(&ml_levels->Pmat[l], level.P_pattern, level.P);
-              read_ml_operator(&ml_levels->Rmat[l - 1],
-                               level.R_pattern,
-                               level.R);
-              AssertThrow(level.P.m() == levels[l - 1]->A.m() &&
-                            level.P.n() == level_matrix.m() &&
-                            level.R.m() == level_matrix.m() &&
-                            level.R.n() == levels[l - 1]->A.m(),
+              read_ml_operator(&ml_levels->Pmat[l], grid.P_pattern, grid.P);
+              read_ml_operator(&ml_levels->Rmat[l - 1], grid.R_pattern, grid.R);
+              AssertThrow(grid.P.m() == rows_above &&
+                            grid.P.n() == level_matrix.m() &&
+                            grid.R.m() == level_matrix.m() &&
+                            grid.R.n() == rows_above,
                           ExcMessage("ML's transfers do not match its "
                                      "levels' sizes"));
+              grid.P_rows = compressed_rows(grid.P);
+              grid.R_rows = compressed_rows(grid.R);
             }
-          const SparseMatrix<double> &matrix = l > 0 ? level_matrix : A;
-          if (l + 1 == n)
+          const unsigned int rows = l > 0 ? level_matrix.m() : A.m();
+          grid.b.reinit(rows);
+          grid.x.reinit(rows);
+          grid.residual.reinit(rows);
+          grid.correction.reinit(rows);
+          set_operator(operators[0], l, l > 0 ? level_matrix : A);
+        }
+    }
+
+
+    void
+    AMGPreconditioner::refresh(const SparseMatrix<double> &A)
+    {
+      AssertThrow(!grids.empty() && A.m() == m(),
+                  ExcMessage("an AMG hierarchy refreshed with a matrix of "
+                             "another size"));
+      // into the set that is not the accepted one
+      const unsigned int target =
+        accepted < 0 ? current : 1 - static_cast<unsigned int>(accepted);
+      Operators &set = operators[target];
+      while (set.size() < grids.size())
+        set.push_back(std::make_unique<Level>());
+      // the current set until the new one is complete (a singular coarse
+      // operator throws on the way)
+      current = accepted < 0 ? current : static_cast<unsigned int>(accepted);
+      // each level's operator from the one above: A_l = R_l A_{l-1} P_l
+      set_operator(set, 0, A);
+      for (unsigned int l = 1; l < grids.size(); ++l)
+        {
+          SparsityPattern      pattern;
+          SparseMatrix<double> matrix;
+          galerkin_product(
+            grids[l]->R_rows, set[l - 1]->A, grids[l]->P_rows, pattern, matrix);
+          set_operator(set, l, matrix);
+        }
+      current = target;
+    }
+
+
+    void
+    AMGPreconditioner::accept()
+    {
+      accepted = current;
+    }
+
+
+    bool
+    AMGPreconditioner::restore()
+    {
+      if (accepted < 0 || static_cast<unsigned int>(accepted) == current)
+        return false;
+      current = accepted;
+      return true;
+    }
+
+
+    void
+    AMGPreconditioner::set_operator(Operators                  &set,
+                                    const unsigned int          l,
+                                    const SparseMatrix<double> &matrix)
+    {
+      Level             &level = *set[l];
+      const unsigned int n     = grids.size();
+      if (l + 1 == n)
+        {
+          // the coarsest level: its LU factorization by KLU, as ML's
+          // (a refreshed one's factorization, problem and matrix go
+          // before the map and communicator they were made with)
+          level.direct.reset();
+          level.problem.reset();
+          level.matrix.reset();
+          level.comm = std::make_unique<Epetra_MpiComm>(MPI_COMM_SELF);
+          level.map = std::make_unique<Epetra_Map>(static_cast<int>(matrix.m()),
+                                                   0,
+                                                   *level.comm);
+          level.matrix  = epetra_nonzeros(matrix, *level.map);
+          level.problem = std::make_unique<Epetra_LinearProblem>();
+          level.problem->SetOperator(level.matrix.get());
+          level.direct.reset(Amesos().Create("Amesos_Klu", *level.problem));
+          // a singular coarse operator fails the step like a solve that
+          // does not converge: the increment is cut back
+          if (!(level.direct && level.direct->SymbolicFactorization() == 0 &&
+                level.direct->NumericFactorization() == 0))
+            throw SolveFailed("KLU could not factorize the coarsest level of "
+                              "the AMG hierarchy (a singular coarse "
+                              "operator); try Linear solver/Type = direct");
+        }
+      if (l == 0 || l + 1 < n)
+        {
+          // its nonzeros, whose rows have the block layout the copy reads
+          // fastest (base/nonzero_matrix.h), and its smoother: Chebyshev of
+          // degree 2 on the Jacobi-scaled matrix over [lambda_max / 10,
+          // lambda_max] (ML's "smoother: Chebyshev alpha" = 10). The scaling
+          // by |a_ii| and the power iteration keep the smoother finite on
+          // the indefinite tangents of deep contact (rows with a_ii < 0),
+          // where a Lanczos estimate with the signed diagonal returned NaN
+          // on tangents of the full knee
+          level.A.copy_from(matrix);
+          Smoother::AdditionalData data;
+          data.degree              = 2;
+          data.smoothing_range     = 10.;
+          data.eig_cg_n_iterations = 10;
+          data.eigenvalue_algorithm =
+            Smoother::AdditionalData::EigenvalueAlgorithm::power_iteration;
+          data.preconditioner =
+            std::make_shared<DiagonalMatrix<Vector<double>>>();
+          Vector<double> &inverse_diagonal = data.preconditioner->get_vector();
+          inverse_diagonal.reinit(level.A.m());
+          for (types::global_dof_index i = 0; i < level.A.m(); ++i)
             {
-              // the coarsest level: its LU factorization by KLU, as ML's
-              level.comm = std::make_unique<Epetra_MpiComm>(MPI_COMM_SELF);
-              level.map =
-                std::make_unique<Epetra_Map>(static_cast<int>(matrix.m()),
-                                             0,
-                                             *level.comm);
-              level.matrix  = epetra_nonzeros(matrix, *level.map);
-              level.problem = std::make_unique<Epetra_LinearProblem>();
-              level.problem->SetOperator(level.matrix.get());
-              level.direct.reset(Amesos().Create("Amesos_Klu", *level.problem));
-              // a singular coarse operator fails the step like a solve
-              // that does not converge: the increment is cut back
-              if (!(level.direct &&
-                    level.direct->SymbolicFactorization() == 0 &&
-                    level.direct->NumericFactorization() == 0))
-                throw SolveFailed("KLU could not factorize the coarsest "
-                                  "level of the AMG hierarchy (a singular "
-                                  "coarse operator); try Linear solver/Type "
-                                  "= direct");
+              const double a      = std::abs(level.A.diag_element(i));
+              inverse_diagonal[i] = (a > 0. && std::isfinite(a)) ? 1. / a : 1.;
             }
-          if (l == 0 || l + 1 < n)
-            {
-              // the finest level from A itself, whose rows have the block
-              // layout the copy reads fastest (base/nonzero_matrix.h)
-              level.A.copy_from(l > 0 ? matrix : A);
-              make_smoother(level);
-              level.residual.reinit(level.A.m());
-              level.correction.reinit(level.A.m());
-            }
-          if (l > 0)
-            {
-              level.b.reinit(matrix.m());
-              level.x.reinit(matrix.m());
-            }
+          level.smoother.initialize(level.A, data);
         }
     }
 
@@ -276,8 +547,9 @@ namespace TissueContact
                              Vector<double>       &x,
                              const Vector<double> &b) const
     {
-      const Level &level = *levels[l];
-      if (l > 0 && l + 1 == levels.size())
+      const Level &level = *operators[current][l];
+      const Grid  &grid  = *grids[l];
+      if (l > 0 && l + 1 == grids.size())
         {
           solve_coarsest(level, x, b);
           return;
@@ -285,18 +557,18 @@ namespace TissueContact
       // x_1 = S b
       level.smoother.vmult(x, b);
       // x_2 = x_1 + C (b - A x_1)
-      level.A.residual(level.residual, x, b);
-      if (l + 1 == levels.size())
+      level.A.residual(grid.residual, x, b);
+      if (l + 1 == grids.size())
         // a single level: its factorization
-        solve_coarsest(level, level.correction, level.residual);
+        solve_coarsest(level, grid.correction, grid.residual);
       else
         {
-          const Level &coarse = *levels[l + 1];
-          coarse.R.vmult(coarse.b, level.residual);
+          const Grid &coarse = *grids[l + 1];
+          coarse.R.vmult(coarse.b, grid.residual);
           cycle(l + 1, coarse.x, coarse.b);
-          coarse.P.vmult(level.correction, coarse.x);
+          coarse.P.vmult(grid.correction, coarse.x);
         }
-      x += level.correction;
+      x += grid.correction;
       // x = x_2 + S (b - A x_2)
       level.smoother.step(x, b);
     }

@@ -135,7 +135,11 @@ namespace TissueContact
         "sec. 4.5.2): plain took the full knee (prm/knee_flexion.prm, which "
         "sets it) from 464 s to 404-413 s, its linear solve from 237 s to "
         "173-175 s; on the knee-scale tube (prm/knee_tube.prm) plain was 7 % "
-        "slower (one thread, side by side), on the falling rods the same.",
+        "slower (one thread, side by side), on the falling rods the same. "
+        "With plain, a kept hierarchy (Reuse preconditioner) is refreshed "
+        "for each matrix: its aggregates and transfers kept, its operators "
+        "the Galerkin products of the new matrix (doc/theory/04-solver.md "
+        "sec. 4.5.1).",
         Patterns::Selection("plain|smoothed"));
       prm.add_parameter(
         "Forcing term",
@@ -170,7 +174,9 @@ namespace TissueContact
         "the next (across Newton iterations, increments, time steps and "
         "new contact couplings) until the GMRES iterations it has cost "
         "beyond those it needed when it was built add up to a new one's "
-        "setup (false: a new hierarchy for every solve). Measured: with "
+        "setup (false: a new hierarchy for every solve); with AMG "
+        "aggregation = plain its operators are refreshed for each matrix. "
+        "Measured: with "
         "Forcing term = Eisenstat-Walker 30 % less linear-solve time on "
         "the quick knee-scale tube, and 21 hierarchies instead of 116 on "
         "the full one (prm/knee_tube.prm, "
@@ -264,14 +270,30 @@ namespace TissueContact
       // preconditioner of this one
       if (amg && amg->m() != K.m())
         amg.reset();
+      // plain aggregation: a kept hierarchy is refreshed for this matrix
+      // (doc/theory/04-solver.md sec. 4.5.1); not with smoothed
+      // aggregation, whose prolongators hold a row's whole neighbourhood:
+      // there the Galerkin products cost more than the iterations they save
+      const bool smoothed  = parameters.amg_aggregation == "smoothed";
+      bool       refreshed = false;
       if (!amg)
         {
           amg = std::make_unique<AMGPreconditioner>();
-          amg->initialize(K,
-                          null_space,
-                          null_space_dimension,
-                          parameters.amg_aggregation == "smoothed");
+          amg->initialize(K, null_space, null_space_dimension, smoothed);
           fresh_rate = -1.;
+        }
+      else if (!smoothed && parameters.reuse_preconditioner)
+        {
+          try
+            {
+              amg->refresh(K);
+            }
+          catch (...)
+            {
+              amg.reset();
+              throw;
+            }
+          refreshed = true;
         }
       // fresh: no solve has measured this hierarchy's rate yet (a solve
       // that starts at its target measures nothing)
@@ -310,36 +332,55 @@ namespace TissueContact
                                   parameters.restart("GMRES+AMG") :
                                   0);
       converged = true;
+      // CG's iterations with refreshed operators that refused (below)
+      unsigned int refused_spent = 0;
       if (negative_curvature != nullptr)
         {
           // conjugate gradients, which stop at the first direction p of
           // curvature p.Kp that is not positive, or a preconditioned
           // residual with r.z not positive (a preconditioner that is not
           // positive definite either)
-          CurvatureWatch<NonzeroMatrix> A(nonzeros);
-          A.direction = direction;
-          const CurvatureWatch<AMGPreconditioner> M(*amg);
-          SolverCG<Vector<double>>                cg(control);
-          cg.connect([&](const unsigned int, const double, const auto &) {
-            return A.negative || M.negative ? SolverControl::failure :
-                                              SolverControl::success;
-          });
-          try
+          // CG from x; whether it met r.z <= 0 (the preconditioner's
+          // curvature) and not p.Kp <= 0
+          const auto run_cg = [&]() {
+            CurvatureWatch<NonzeroMatrix> A(nonzeros);
+            A.direction = direction;
+            const CurvatureWatch<AMGPreconditioner> M(*amg);
+            SolverCG<Vector<double>>                cg(control);
+            cg.connect([&](const unsigned int, const double, const auto &) {
+              return A.negative || M.negative ? SolverControl::failure :
+                                                SolverControl::success;
+            });
+            converged = true;
+            try
+              {
+                cg.solve(A, x, b, M);
+              }
+            catch (const SolverControl::NoConvergence &)
+              {
+                converged = false;
+              }
+            *negative_curvature = A.negative || M.negative;
+            return M.negative && !A.negative;
+          };
+          const bool preconditioner_refused = run_cg();
+          // a cycle refreshed with an indefinite tangent can be indefinite
+          // itself, and its refusal tells nothing of the tangent: solved
+          // again from zero with the operators of the last tangent solved
+          // without a refusal, as a kept hierarchy was before refreshes
+          if (preconditioner_refused && refreshed && amg->restore())
             {
-              cg.solve(A, x, b, M);
+              refused_spent = control.last_step();
+              x             = 0.;
+              run_cg();
             }
-          catch (const SolverControl::NoConvergence &)
-            {
-              converged = false;
-            }
-          *negative_curvature = A.negative || M.negative;
           if (*negative_curvature)
             {
               // a hierarchy built from this tangent is none for the
               // shifted one; a kept one (of a definite tangent) is
               if (fresh)
                 amg.reset();
-              return control.last_step();
+              return refused_spent + control.last_step();
             }
         }
       else
@@ -360,8 +401,12 @@ namespace TissueContact
         {
           if (!parameters.reuse_preconditioner)
             amg.reset();
-          return 0;
+          return refused_spent;
         }
+      // operators of a matrix solved without a refusal: kept beside the
+      // next refreshed ones
+      if (converged)
+        amg->accept();
       const double rate = control.last_step() / decades;
       if (fresh)
         {
@@ -375,13 +420,15 @@ namespace TissueContact
         }
       else
         {
-          excess += std::max(0., control.last_step() - fresh_rate * decades);
+          excess += std::max(0.,
+                             refused_spent + control.last_step() -
+                               fresh_rate * decades);
           if (!converged || excess >= setup_cost)
             {
               // the matrix has drifted from the hierarchy's: a new one, now
               // (going on from the iterate reached) if this solve stopped
               // at its budget, else for the next solve
-              const unsigned int spent = control.last_step();
+              const unsigned int spent = refused_spent + control.last_step();
               amg.reset();
               if (!converged)
                 return spent + solve_amg(K,
@@ -396,7 +443,7 @@ namespace TissueContact
         }
       if (!parameters.reuse_preconditioner)
         amg.reset();
-      return control.last_step();
+      return refused_spent + control.last_step();
     }
 
 

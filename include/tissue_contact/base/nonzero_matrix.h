@@ -92,6 +92,43 @@ namespace TissueContact
       return diagonal[i];
     }
 
+    /** Groups of three rows (the last may hold fewer). */
+    types::global_dof_index
+    n_groups() const
+    {
+      return group_start.size() - 1;
+    }
+
+    /** Group @p g's other columns than the diagonals, ascending: indices
+     * group_begin(g) ... group_end(g) - 1 of column() and values(). */
+    std::size_t
+    group_begin(const types::global_dof_index g) const
+    {
+      return group_start[g];
+    }
+
+    /** One past group @p g's last column. */
+    std::size_t
+    group_end(const types::global_dof_index g) const
+    {
+      return group_start[g + 1];
+    }
+
+    /** Column of the groups' entry @p k. */
+    types::global_dof_index
+    column_of(const std::size_t k) const
+    {
+      return column[k];
+    }
+
+    /** The three rows' values of the groups' entry @p k (zero where a row
+     * has none, and at a row's own diagonal). */
+    const double *
+    values_of(const std::size_t k) const
+    {
+      return value.data() + 3 * k;
+    }
+
   private:
     /** @p y = A @p x, or @p y = *@p b - A @p x if @p residual. */
     template <bool residual>

@@ -14,6 +14,7 @@
 #include <Epetra_Map.h>
 #include <Epetra_MpiComm.h>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -46,8 +47,9 @@ namespace TissueContact
      * @f]
      * the preconditioner is @f$V_0@f$. This is the V-cycle ML runs, with
      * every product, smoothing step and transfer on the threads. The
-     * operator is fixed between initialize() calls (it uses the copies,
-     * not later matrices), so a Krylov method may keep it across systems.
+     * operator is fixed between initialize() and refresh() calls (it uses
+     * the copies, not later matrices), so a Krylov method may keep it
+     * across systems.
      */
     class AMGPreconditioner
     {
@@ -68,6 +70,26 @@ namespace TissueContact
                  const unsigned int          null_space_dimension,
                  const bool                  smoothed_aggregation);
 
+      /** The hierarchy for the matrix @p A (of the size it was built
+       * for), on the aggregates and transfers it was built with: every
+       * level's operator anew, @f$A_l = R_l A_{l-1} P_l@f$ from
+       * @f$A_0 = A@f$ without its stored zeros, and with it the smoothers
+       * and the coarsest factorization (doc/theory/04-solver.md sec.
+       * 4.5.1). The operators of the last accept() are kept beside them. */
+      void
+      refresh(const SparseMatrix<double> &A);
+
+      /** The current operators are those of a matrix the Krylov method
+       * solved without a refusal: kept through later refresh() calls until
+       * the next accept(). */
+      void
+      accept();
+
+      /** Go back to the operators of the last accept(), if they are not
+       * the current ones; returns whether it did. */
+      bool
+      restore();
+
       /** @p x = the V-cycle applied to @p b. */
       void
       vmult(Vector<double> &x, const Vector<double> &b) const;
@@ -76,41 +98,68 @@ namespace TissueContact
       types::global_dof_index
       m() const
       {
-        return levels.empty() ? 0 : levels[0]->A.m();
+        return n_rows;
       }
 
       /** Levels of the hierarchy, the finest included. */
       unsigned int
       n_levels() const
       {
-        return levels.size();
+        return grids.size();
       }
+
+      /** A sparse matrix's rows one after the other, without zeros: row
+       * i's entries are rows_begin[i] ... rows_begin[i + 1] - 1 of
+       * @p column (ascending) and @p value. */
+      struct CompressedRows
+      {
+        std::vector<std::size_t>             rows_begin;
+        std::vector<types::global_dof_index> column;
+        std::vector<double>                  value;
+        unsigned int                         n_columns = 0;
+      };
 
     private:
       using Smoother = PreconditionChebyshev<NonzeroMatrix,
                                              Vector<double>,
                                              DiagonalMatrix<Vector<double>>>;
 
-      /** A level of the hierarchy: its operator's nonzeros in groups of
-       * three rows (base/nonzero_matrix.h), and, below the finest, the
-       * transfers from and to the level above; on the coarsest level,
-       * instead of a smoother, its sparse LU factorization by KLU
-       * (Amesos), ML's own coarse solver. */
+      /** A level's transfers from and to the level above (none on the
+       * finest), and its vectors: right-hand side, iterate, residual and
+       * the correction from below. */
+      struct Grid
+      {
+        SparsityPattern      P_pattern, R_pattern;
+        SparseMatrix<double> P, R;
+        /** P and R again, for the Galerkin products of refresh() */
+        CompressedRows         P_rows, R_rows;
+        mutable Vector<double> b, x, residual, correction;
+      };
+
+      /** A level's operator: its nonzeros in groups of three rows
+       * (base/nonzero_matrix.h) and its smoother, or on the coarsest level
+       * its sparse LU factorization by KLU (Amesos), ML's own coarse
+       * solver. */
       struct Level
       {
         NonzeroMatrix                         A;
-        SparsityPattern                       P_pattern, R_pattern;
-        SparseMatrix<double>                  P, R;
         Smoother                              smoother;
         std::unique_ptr<Epetra_MpiComm>       comm;
         std::unique_ptr<Epetra_Map>           map;
         std::unique_ptr<Epetra_CrsMatrix>     matrix;
         std::unique_ptr<Epetra_LinearProblem> problem;
         std::unique_ptr<Amesos_BaseSolver>    direct;
-        /** the level's right-hand side, iterate, residual and the
-         * correction from below */
-        mutable Vector<double> b, x, residual, correction;
       };
+
+      using Operators = std::vector<std::unique_ptr<Level>>;
+
+      /** Level @p l's operator in @p operators from @p matrix: its
+       * nonzeros and smoother, or on the coarsest level its
+       * factorization. */
+      void
+      set_operator(Operators                  &operators,
+                   const unsigned int          l,
+                   const SparseMatrix<double> &matrix);
 
       /** @p x = A_l^{-1} @p b on the coarsest level @p level. */
       static void
@@ -124,7 +173,14 @@ namespace TissueContact
             Vector<double>       &x,
             const Vector<double> &b) const;
 
-      std::vector<std::unique_ptr<Level>> levels;
+      std::vector<std::unique_ptr<Grid>> grids;
+      /** Two sets of operators: the current one, and the last accepted
+       * one if it is the other (accepted < 0: none). */
+      std::array<Operators, 2> operators;
+      unsigned int             current  = 0;
+      int                      accepted = -1;
+      /** Rows of the finest level. */
+      types::global_dof_index n_rows = 0;
     };
   } // namespace Solvers
 } // namespace TissueContact
