@@ -25,7 +25,8 @@ namespace TissueContact
     {
       /** @p matrix (@p m x @p n, and its @p pattern) with the rows given
        * one after the other: row i's @p row_length[i] entries, their
-       * columns ascending in @p column and values in @p value. */
+       * columns in @p column (in any order: ML's rows need not be sorted)
+       * and values in @p value. */
       void
       make_matrix(const unsigned int                          m,
                   const unsigned int                          n,
@@ -45,8 +46,7 @@ namespace TissueContact
         for (unsigned int i = 0; i < m; k += row_length[i], ++i)
           pattern.add_entries(i,
                               column.begin() + k,
-                              column.begin() + k + row_length[i],
-                              true);
+                              column.begin() + k + row_length[i]);
         pattern.compress();
         matrix.reinit(pattern);
         k = 0;
@@ -105,9 +105,10 @@ namespace TissueContact
         CompressedRows rows;
         rows.n_columns = B.n();
         rows.rows_begin.push_back(0);
+        std::vector<std::pair<types::global_dof_index, double>> row;
         for (unsigned int i = 0; i < B.m(); ++i)
           {
-            std::vector<std::pair<types::global_dof_index, double>> row;
+            row.clear();
             for (auto b = B.begin(i); b != B.end(i); ++b)
               if (b->value() != 0.)
                 row.emplace_back(b->column(), b->value());

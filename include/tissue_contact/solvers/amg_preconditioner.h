@@ -47,9 +47,9 @@ namespace TissueContact
      * @f]
      * the preconditioner is @f$V_0@f$. This is the V-cycle ML runs, with
      * every product, smoothing step and transfer on the threads. The
-     * operator is fixed between initialize() and refresh() calls (it uses
-     * the copies, not later matrices), so a Krylov method may keep it
-     * across systems.
+     * operator is fixed between calls of initialize(), refresh() and
+     * restore() (it uses the copies, not later matrices), so a Krylov
+     * method may keep it across systems.
      */
     class AMGPreconditioner
     {
