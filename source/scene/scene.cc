@@ -1,4 +1,5 @@
 #include <tissue_contact/base/exceptions.h>
+#include <tissue_contact/base/mesh_order.h>
 #include <tissue_contact/materials/material_factory.h>
 #include <tissue_contact/scene/scene.h>
 
@@ -331,6 +332,10 @@ namespace TissueContact
                                "): use a scale that keeps them below 1e100"));
       if (m.distortion > 0.)
         GridTools::distort_random(m.distortion, triangulation, true, 20261122);
+      // after the distortion, which moves the vertices in their order: the
+      // same geometry either way
+      if (parameters.dof_numbering == "Cuthill-McKee")
+        order_mesh_by_cuthill_mckee(triangulation);
     }
 
 
