@@ -395,18 +395,19 @@ namespace TissueContact
       prm.add_parameter(
         "DoF numbering",
         dof_numbering,
-        "as meshed: the unknowns in the order deal.II distributes them, cell "
-        "by cell in the mesh file's order; Cuthill-McKee: the mesh's vertices "
-        "numbered in the Cuthill-McKee order of their graph and its cells by "
-        "their lowest vertex, then the unknowns support point by support "
-        "point in that order, so that neighbours lie close in memory (the "
-        "tangent's rows, the cells' data, the vectors) and the elastic "
-        "assembly splits its rows among the threads. The same equations; the "
+        "Cuthill-McKee: the mesh's vertices numbered in the Cuthill-McKee "
+        "order of their graph and its cells by their lowest vertex, then the "
+        "unknowns support point by support point in that order, so that "
+        "neighbours lie close in memory (the tangent's rows, the cells' data, "
+        "the vectors) and the elastic assembly splits its rows among the "
+        "threads; as meshed: the unknowns in the order deal.II distributes "
+        "them, cell by cell in the mesh file's order. The same equations; the "
         "sums, the AMG hierarchy's aggregates and so the Newton path differ. "
-        "Measured on the full knee (doc/theory/02-weak-form-and-"
-        "linearization.md sec. 2.3; prm/knee_flexion.prm sets it): the "
-        "elastic tangent in 13 instead of 28 ms, the whole run in 203 instead "
-        "of 234 s on a path as long.",
+        "Measured with two threads (doc/theory/02-weak-form-and-"
+        "linearization.md sec. 2.3): the full knee in 203 instead of 234 s on "
+        "a path as long (its elastic tangent in 13 instead of 28 ms), the "
+        "knee-scale tube (prm/knee_tube.prm) in 18-22 instead of 29-32 s; box "
+        "meshes and small scenes the same.",
         Patterns::Selection("as meshed|Cuthill-McKee"));
       prm.leave_subsection();
 

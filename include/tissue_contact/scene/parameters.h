@@ -139,12 +139,12 @@ namespace TissueContact
       /** P2's stiffness quadrature: "full" (14 points) or "reduced" (6). */
       std::string stiffness_quadrature = "full";
       /** "as meshed" or "Cuthill-McKee" (Discretization). */
-      std::string                                  dof_numbering = "as meshed";
-      std::vector<BodyParameters>                  bodies;
-      std::vector<DirichletParameters>             dirichlet;
-      std::vector<TractionParameters>              tractions;
-      Tensor<1, 3>                                 gravity;
-      Contact::Parameters                          contact;
+      std::string                      dof_numbering = "Cuthill-McKee";
+      std::vector<BodyParameters>      bodies;
+      std::vector<DirichletParameters> dirichlet;
+      std::vector<TractionParameters>  tractions;
+      Tensor<1, 3>                     gravity;
+      Contact::Parameters              contact;
       Solvers::IncrementalNewtonSolver::Parameters solver;
       Dynamics::TimeIntegrator::Parameters         time_integration;
       OutputParameters                             output;
