@@ -423,6 +423,15 @@ namespace TissueContact
     void
     AMGPreconditioner::refresh(const SparseMatrix<double> &A)
     {
+      refresh(A, nullptr);
+    }
+
+
+    void
+    AMGPreconditioner::refresh(
+      const SparseMatrix<double>                 &A,
+      const std::shared_ptr<const NonzeroMatrix> &A_nonzeros)
+    {
       AssertThrow(!grids.empty() && A.m() == m(),
                   ExcMessage("an AMG hierarchy refreshed with a matrix of "
                              "another size"));
@@ -436,16 +445,28 @@ namespace TissueContact
       // operator throws on the way)
       current = accepted < 0 ? current : static_cast<unsigned int>(accepted);
       // each level's operator from the one above: A_l = R_l A_{l-1} P_l
-      set_operator(set, 0, A);
+      set_operator(set, 0, A, A_nonzeros);
       for (unsigned int l = 1; l < grids.size(); ++l)
         {
           SparsityPattern      pattern;
           SparseMatrix<double> matrix;
-          galerkin_product(
-            grids[l]->R_rows, set[l - 1]->A, grids[l]->P_rows, pattern, matrix);
+          galerkin_product(grids[l]->R_rows,
+                           *set[l - 1]->A,
+                           grids[l]->P_rows,
+                           pattern,
+                           matrix);
           set_operator(set, l, matrix);
         }
       current = target;
+    }
+
+
+    const NonzeroMatrix *
+    AMGPreconditioner::accepted_finest() const
+    {
+      return accepted < 0 || operators[accepted].empty() ?
+               nullptr :
+               operators[accepted][0]->A.get();
     }
 
 
@@ -467,9 +488,11 @@ namespace TissueContact
 
 
     void
-    AMGPreconditioner::set_operator(Operators                  &set,
-                                    const unsigned int          l,
-                                    const SparseMatrix<double> &matrix)
+    AMGPreconditioner::set_operator(
+      Operators                                  &set,
+      const unsigned int                          l,
+      const SparseMatrix<double>                 &matrix,
+      const std::shared_ptr<const NonzeroMatrix> &nonzeros)
     {
       Level             &level = *set[l];
       const unsigned int n     = grids.size();
@@ -507,7 +530,16 @@ namespace TissueContact
           // the indefinite tangents of deep contact (rows with a_ii < 0),
           // where a Lanczos estimate with the signed diagonal returned NaN
           // on tangents of the full knee
-          level.A.copy_from(matrix);
+          // the smoother lets go of the operator before it is replaced
+          level.smoother.clear();
+          if (nonzeros)
+            level.A = nonzeros;
+          else
+            {
+              auto own = std::make_shared<NonzeroMatrix>();
+              own->copy_from(matrix);
+              level.A = std::move(own);
+            }
           Smoother::AdditionalData data;
           data.degree              = 2;
           data.smoothing_range     = 10.;
@@ -517,13 +549,13 @@ namespace TissueContact
           data.preconditioner =
             std::make_shared<DiagonalMatrix<Vector<double>>>();
           Vector<double> &inverse_diagonal = data.preconditioner->get_vector();
-          inverse_diagonal.reinit(level.A.m());
-          for (types::global_dof_index i = 0; i < level.A.m(); ++i)
+          inverse_diagonal.reinit(level.A->m());
+          for (types::global_dof_index i = 0; i < level.A->m(); ++i)
             {
-              const double a      = std::abs(level.A.diag_element(i));
+              const double a      = std::abs(level.A->diag_element(i));
               inverse_diagonal[i] = (a > 0. && std::isfinite(a)) ? 1. / a : 1.;
             }
-          level.smoother.initialize(level.A, data);
+          level.smoother.initialize(*level.A, data);
         }
     }
 
@@ -558,7 +590,7 @@ namespace TissueContact
       // x_1 = S b
       level.smoother.vmult(x, b);
       // x_2 = x_1 + C (b - A x_1)
-      level.A.residual(grid.residual, x, b);
+      level.A->residual(grid.residual, x, b);
       if (l + 1 == grids.size())
         // a single level: its factorization
         solve_coarsest(level, grid.correction, grid.residual);

@@ -286,7 +286,7 @@ namespace TissueContact
         {
           try
             {
-              amg->refresh(K);
+              amg->refresh(K, nonzeros);
             }
           catch (...)
             {
@@ -343,7 +343,7 @@ namespace TissueContact
           // CG from x; whether it met r.z <= 0 (the preconditioner's
           // curvature) and not p.Kp <= 0
           const auto run_cg = [&]() {
-            CurvatureWatch<NonzeroMatrix> A(nonzeros);
+            CurvatureWatch<NonzeroMatrix> A(*nonzeros);
             A.direction = direction;
             const CurvatureWatch<AMGPreconditioner> M(*amg);
             SolverCG<Vector<double>>                cg(control);
@@ -390,7 +390,7 @@ namespace TissueContact
                                                            "GMRES+AMG"));
           try
             {
-              gmres.solve(nonzeros, x, b, *amg);
+              gmres.solve(*nonzeros, x, b, *amg);
             }
           catch (const SolverControl::NoConvergence &)
             {
@@ -447,6 +447,16 @@ namespace TissueContact
     }
 
 
+    const NonzeroMatrix &
+    LinearSolver::copy_nonzeros_of(const SparseMatrix<double> &K) const
+    {
+      const NonzeroMatrix *kept = amg ? amg->accepted_finest() : nullptr;
+      nonzeros = nonzero_buffers[kept == nonzero_buffers[0].get() ? 1 : 0];
+      nonzeros->copy_from(K);
+      return *nonzeros;
+    }
+
+
     unsigned int
     LinearSolver::solve(const SparseMatrix<double> &K,
                         Vector<double>             &x,
@@ -467,7 +477,7 @@ namespace TissueContact
       // nonzeros: bit for bit the products with K, at 40 % of their cost on
       // the full knee (doc/theory/04-solver.md sec. 4.5.2)
       if (type != "direct")
-        nonzeros.copy_from(K);
+        copy_nonzeros_of(K);
       if (type == "direct")
         solve_direct(K, x, b);
       else if (type == "GMRES+AMG")
@@ -503,7 +513,7 @@ namespace TissueContact
             {
               PreconditionJacobi<SparseMatrix<double>> jacobi;
               jacobi.initialize(K);
-              gmres.solve(nonzeros, x, b, jacobi);
+              gmres.solve(*nonzeros, x, b, jacobi);
             }
           catch (const SolverControl::NoConvergence &)
             {
@@ -535,7 +545,7 @@ namespace TissueContact
           Assert(tests_definiteness(K.m()), ExcInternalError());
           if (test_symmetry && !is_symmetric(K))
             return Definiteness::not_symmetric;
-          nonzeros.copy_from(K);
+          copy_nonzeros_of(K);
           x = 0.;
           bool converged, negative = false;
           try

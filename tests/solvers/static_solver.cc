@@ -1184,7 +1184,27 @@ namespace
     const unsigned int n_stale     = iterations(L100, c, stale),
                        n_refreshed = iterations(L100, c, refreshed),
                        n_fresh     = iterations(L100, c, fresh);
-    const bool     restored        = refreshed.restore();
+    Vector<double> v_100(large.n);
+    refreshed.vmult(v_100, c);
+    // refreshed with the finest level's nonzeros given (shared with the
+    // caller, as LinearSolver shares its copy): the same V-cycle bit for
+    // bit, and once accepted those nonzeros are the ones kept
+    Solvers::AMGPreconditioner shared;
+    shared.initialize(L, {}, 0, false);
+    shared.accept();
+    const bool own_kept = shared.accepted_finest() != nullptr;
+    const auto nonzeros = std::make_shared<NonzeroMatrix>();
+    nonzeros->copy_from(L100);
+    shared.refresh(L100, nonzeros);
+    Vector<double> v_shared(large.n);
+    shared.vmult(v_shared, c);
+    v_shared -= v_100;
+    shared.accept();
+    deallog << "refreshed with shared nonzeros: the V-cycle bit for bit "
+            << (v_shared.l2_norm() == 0.) << "; kept before " << own_kept
+            << ", after: the shared ones "
+            << (shared.accepted_finest() == nonzeros.get()) << std::endl;
+    const bool     restored = refreshed.restore();
     Vector<double> v_restored(large.n);
     refreshed.vmult(v_restored, c);
     difference = v_restored;

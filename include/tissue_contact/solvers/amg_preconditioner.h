@@ -79,6 +79,19 @@ namespace TissueContact
       void
       refresh(const SparseMatrix<double> &A);
 
+      /** As refresh(const SparseMatrix<double> &), with the finest level's
+       * operator @p A_nonzeros, A's nonzeros as the caller copied them
+       * (the Krylov method's operator), shared instead of copied again.
+       * The caller must not change it while it is accepted_finest(). */
+      void
+      refresh(const SparseMatrix<double>                 &A,
+              const std::shared_ptr<const NonzeroMatrix> &A_nonzeros);
+
+      /** The finest level's operator of the last accept(), kept through
+       * the next refresh() (null: none). */
+      const NonzeroMatrix *
+      accepted_finest() const;
+
       /** The current operators are those of a matrix the Krylov method
        * solved without a refusal: kept through later refresh() calls until
        * the next accept(). */
@@ -142,7 +155,8 @@ namespace TissueContact
        * solver. */
       struct Level
       {
-        NonzeroMatrix                         A;
+        /** its own, or on the finest level one shared with the caller */
+        std::shared_ptr<const NonzeroMatrix>  A;
         Smoother                              smoother;
         std::unique_ptr<Epetra_MpiComm>       comm;
         std::unique_ptr<Epetra_Map>           map;
@@ -154,12 +168,13 @@ namespace TissueContact
       using Operators = std::vector<std::unique_ptr<Level>>;
 
       /** Level @p l's operator in @p operators from @p matrix: its
-       * nonzeros and smoother, or on the coarsest level its
-       * factorization. */
+       * nonzeros (@p nonzeros if given, else a copy) and smoother, or on
+       * the coarsest level its factorization. */
       void
-      set_operator(Operators                  &operators,
-                   const unsigned int          l,
-                   const SparseMatrix<double> &matrix);
+      set_operator(Operators                                  &operators,
+                   const unsigned int                          l,
+                   const SparseMatrix<double>                 &matrix,
+                   const std::shared_ptr<const NonzeroMatrix> &nonzeros = {});
 
       /** @p x = A_l^{-1} @p b on the coarsest level @p level. */
       static void

@@ -8,6 +8,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -314,9 +315,19 @@ namespace TissueContact
                 bool                       *negative_curvature = nullptr,
                 Vector<double>             *direction          = nullptr) const;
 
-      /** The tangent's nonzeros, GMRES's operator: the same products at
-       * 40 % of the cost on the full knee (0.16 against 0.41 ms). */
-      mutable NonzeroMatrix nonzeros;
+      /** @p K's nonzeros copied into the buffer that the AMG hierarchy's
+       * accepted operators do not hold, which becomes the current one
+       * (a refreshed hierarchy's finest level shares it: one copy per
+       * solve instead of two; doc/theory/04-solver.md sec. 4.5.1). */
+      const NonzeroMatrix &
+      copy_nonzeros_of(const SparseMatrix<double> &K) const;
+
+      /** Two buffers for the tangent's nonzeros, GMRES's and CG's
+       * operator (the same products at 40 % of the cost on the full knee,
+       * 0.16 against 0.41 ms), and the current one: the last copied. */
+      mutable std::array<std::shared_ptr<NonzeroMatrix>, 2> nonzero_buffers{
+        {std::make_shared<NonzeroMatrix>(), std::make_shared<NonzeroMatrix>()}};
+      mutable std::shared_ptr<NonzeroMatrix> nonzeros = nonzero_buffers[0];
 
       /** The hierarchy (with its copy of the matrix it was built from). */
       mutable std::unique_ptr<AMGPreconditioner> amg;
