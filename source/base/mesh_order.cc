@@ -18,6 +18,9 @@ namespace TissueContact
                 ExcMessage("a refined mesh cannot be renumbered"));
     auto [vertices, cells, subcells] =
       GridTools::get_coarse_mesh_description(triangulation);
+    // create_triangulation() takes used vertices only (the description
+    // lists every vertex up to the highest one a cell uses)
+    GridTools::delete_unused_vertices(vertices, cells, subcells);
     const unsigned int n_vertices = vertices.size();
 
     // the vertices' graph, and their Cuthill-McKee numbers: new_number[v]
