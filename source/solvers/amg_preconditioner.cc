@@ -421,13 +421,6 @@ namespace TissueContact
 
 
     void
-    AMGPreconditioner::refresh(const SparseMatrix<double> &A)
-    {
-      refresh(A, nullptr);
-    }
-
-
-    void
     AMGPreconditioner::refresh(
       const SparseMatrix<double>                 &A,
       const std::shared_ptr<const NonzeroMatrix> &A_nonzeros)

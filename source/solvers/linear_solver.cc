@@ -447,13 +447,12 @@ namespace TissueContact
     }
 
 
-    const NonzeroMatrix &
+    void
     LinearSolver::copy_nonzeros_of(const SparseMatrix<double> &K) const
     {
       const NonzeroMatrix *kept = amg ? amg->accepted_finest() : nullptr;
       nonzeros = nonzero_buffers[kept == nonzero_buffers[0].get() ? 1 : 0];
       nonzeros->copy_from(K);
-      return *nonzeros;
     }
 
 

@@ -75,17 +75,14 @@ namespace TissueContact
        * level's operator anew, @f$A_l = R_l A_{l-1} P_l@f$ from
        * @f$A_0 = A@f$ without its stored zeros, and with it the smoothers
        * and the coarsest factorization (doc/theory/04-solver.md sec.
-       * 4.5.1). The operators of the last accept() are kept beside them. */
-      void
-      refresh(const SparseMatrix<double> &A);
-
-      /** As refresh(const SparseMatrix<double> &), with the finest level's
-       * operator @p A_nonzeros, A's nonzeros as the caller copied them
-       * (the Krylov method's operator), shared instead of copied again.
-       * The caller must not change it while it is accepted_finest(). */
+       * 4.5.1). The operators of the last accept() are kept beside them.
+       * With @p A_nonzeros (A's nonzeros as the caller copied them, the
+       * Krylov method's operator) the finest level shares that copy instead
+       * of copying A again; the caller must not change it while it is
+       * accepted_finest(). */
       void
       refresh(const SparseMatrix<double>                 &A,
-              const std::shared_ptr<const NonzeroMatrix> &A_nonzeros);
+              const std::shared_ptr<const NonzeroMatrix> &A_nonzeros = {});
 
       /** The finest level's operator of the last accept(), kept through
        * the next refresh() (null: none). */

@@ -319,7 +319,7 @@ namespace TissueContact
        * accepted operators do not hold, which becomes the current one
        * (a refreshed hierarchy's finest level shares it: one copy per
        * solve instead of two; doc/theory/04-solver.md sec. 4.5.1). */
-      const NonzeroMatrix &
+      void
       copy_nonzeros_of(const SparseMatrix<double> &K) const;
 
       /** Two buffers for the tangent's nonzeros, GMRES's and CG's
