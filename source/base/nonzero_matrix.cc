@@ -201,6 +201,99 @@ namespace TissueContact
   }
 
 
+  void
+  NonzeroMatrix::copy_from(const CompressedRows &A)
+  {
+    const types::global_dof_index n = A.n_rows();
+    AssertDimension(n, A.n_columns);
+    const types::global_dof_index groups = (n + 2) / 3;
+    // f(j, a) for the columns j of group g's rows other than each row's
+    // own diagonal, ascending, with a[c] row 3 g + c's entry there (zero
+    // where it has none): the rows' sorted lists merged, their zeros
+    // skipped, as a SparseMatrix of these entries is read
+    const auto for_each_column = [&](const types::global_dof_index g,
+                                     const auto                   &f) {
+      const types::global_dof_index i = 3 * g;
+      const unsigned int rows = std::min<types::global_dof_index>(3, n - i);
+      std::array<std::size_t, 3> k{}, end{};
+      const auto                 next_entry = [&](const unsigned int c) {
+        while (k[c] < end[c] &&
+               (A.value[k[c]] == 0. || A.column[k[c]] == i + c))
+          ++k[c];
+      };
+      for (unsigned int c = 0; c < rows; ++c)
+        {
+          k[c]   = A.rows_begin[i + c];
+          end[c] = A.rows_begin[i + c + 1];
+          next_entry(c);
+        }
+      for (;;)
+        {
+          types::global_dof_index next = numbers::invalid_dof_index;
+          for (unsigned int c = 0; c < rows; ++c)
+            if (k[c] < end[c])
+              next = std::min(next, A.column[k[c]]);
+          if (next == numbers::invalid_dof_index)
+            return;
+          std::array<double, 3> a{{0., 0., 0.}};
+          for (unsigned int c = 0; c < rows; ++c)
+            if (k[c] < end[c] && A.column[k[c]] == next)
+              {
+                a[c] = A.value[k[c]];
+                ++k[c];
+                next_entry(c);
+              }
+          f(next, a);
+        }
+    };
+    // pass 1: the count of each group's columns (in group_start[g + 1];
+    // then their sums) and of its nonzeros
+    std::vector<std::size_t> entries(groups, 0);
+    group_start.assign(groups + 1, 0);
+    for_each_row(groups, [&](const types::global_dof_index g) {
+      std::size_t columns = 0, nonzeros = 0;
+      for_each_column(g,
+                      [&](types::global_dof_index,
+                          const std::array<double, 3> &a) {
+                        ++columns;
+                        nonzeros += (a[0] != 0.) + (a[1] != 0.) + (a[2] != 0.);
+                      });
+      group_start[g + 1] = columns;
+      entries[g]         = nonzeros;
+    });
+    n_nonzeros = n;
+    for (types::global_dof_index g = 0; g < groups; ++g)
+      {
+        group_start[g + 1] += group_start[g];
+        n_nonzeros += entries[g];
+      }
+    // pass 2: the diagonals (zero where a row stores none), the columns and
+    // values
+    column.resize(group_start[groups]);
+    value.resize(3 * group_start[groups]);
+    diagonal.resize(n);
+    for_each_row(groups, [&](const types::global_dof_index g) {
+      for (types::global_dof_index i = 3 * g; i < std::min(3 * g + 3, n); ++i)
+        {
+          const auto begin = A.column.begin() + A.rows_begin[i],
+                     end   = A.column.begin() + A.rows_begin[i + 1];
+          const auto at    = std::lower_bound(begin, end, i);
+          diagonal[i] =
+            (at != end && *at == i) ? A.value[at - A.column.begin()] : 0.;
+        }
+      std::size_t k = group_start[g];
+      for_each_column(g,
+                      [&](const types::global_dof_index j,
+                          const std::array<double, 3>  &a) {
+                        column[k] = j;
+                        for (unsigned int c = 0; c < 3; ++c)
+                          value[3 * k + c] = a[c];
+                        ++k;
+                      });
+    });
+  }
+
+
   double
   NonzeroMatrix::el(const types::global_dof_index i,
                     const types::global_dof_index j) const

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <tuple>
 #include <utility>
@@ -23,58 +24,54 @@ namespace TissueContact
   {
     namespace
     {
-      /** @p matrix (@p m x @p n, and its @p pattern) with the rows given
-       * one after the other: row i's @p row_length[i] entries, their
-       * columns in @p column (in any order: ML's rows need not be sorted)
-       * and values in @p value. */
+      /** @p matrix (and its @p pattern) with the entries of @p rows. */
       void
-      make_matrix(const unsigned int                          m,
-                  const unsigned int                          n,
-                  const std::vector<unsigned int>            &row_length,
-                  const std::vector<types::global_dof_index> &column,
-                  const std::vector<double>                  &value,
-                  SparsityPattern                            &pattern,
-                  SparseMatrix<double>                       &matrix)
+      make_matrix(const CompressedRows &rows,
+                  SparsityPattern      &pattern,
+                  SparseMatrix<double> &matrix)
       {
+        const unsigned int m = rows.n_rows(), n = rows.n_columns;
         // a square pattern stores each row's diagonal, present or not
-        std::vector<unsigned int> capacity(row_length);
-        if (m == n)
-          for (unsigned int &c : capacity)
-            ++c;
+        std::vector<unsigned int> capacity(m);
+        for (unsigned int i = 0; i < m; ++i)
+          capacity[i] =
+            rows.rows_begin[i + 1] - rows.rows_begin[i] + (m == n ? 1 : 0);
         pattern.reinit(m, n, capacity);
-        std::size_t k = 0;
-        for (unsigned int i = 0; i < m; k += row_length[i], ++i)
+        for (unsigned int i = 0; i < m; ++i)
           pattern.add_entries(i,
-                              column.begin() + k,
-                              column.begin() + k + row_length[i]);
+                              rows.column.begin() + rows.rows_begin[i],
+                              rows.column.begin() + rows.rows_begin[i + 1],
+                              true);
         pattern.compress();
         matrix.reinit(pattern);
-        k = 0;
-        for (unsigned int i = 0; i < m; k += row_length[i], ++i)
-          matrix.set(i, row_length[i], column.data() + k, value.data() + k);
+        for (unsigned int i = 0; i < m; ++i)
+          matrix.set(i,
+                     rows.rows_begin[i + 1] - rows.rows_begin[i],
+                     rows.column.data() + rows.rows_begin[i],
+                     rows.value.data() + rows.rows_begin[i]);
       }
 
 
       /** The entries of one of ML's operators (a level's matrix, a
        * prolongator or a restriction; one process: its local indices are
-       * the global ones) as a deal.II matrix, without its zeros. */
-      void
-      read_ml_operator(ML_Operator          *op,
-                       SparsityPattern      &pattern,
-                       SparseMatrix<double> &matrix)
+       * the global ones) without its zeros, each row sorted (ML's rows need
+       * not be). */
+      CompressedRows
+      read_ml_operator(ML_Operator *op)
       {
-        const int                 m = op->outvec_leng, n = op->invec_leng;
-        std::vector<int>          columns(128);
-        std::vector<double>       values(128);
-        std::vector<unsigned int> row_length(m);
-        std::vector<types::global_dof_index> column;
-        std::vector<double>                  value;
+        const int           m = op->outvec_leng;
+        std::vector<int>    columns(128);
+        std::vector<double> values(128);
+        CompressedRows      rows;
+        rows.n_columns = op->invec_leng;
+        rows.rows_begin.push_back(0);
+        std::vector<std::pair<types::global_dof_index, double>> row;
         for (int i = 0; i < m; ++i)
           {
-            int row = i, length = 0;
+            int row_index = i, length = 0;
             while (ML_Operator_Getrow(op,
                                       1,
-                                      &row,
+                                      &row_index,
                                       columns.size(),
                                       columns.data(),
                                       values.data(),
@@ -83,35 +80,10 @@ namespace TissueContact
                 columns.resize(2 * columns.size());
                 values.resize(2 * values.size());
               }
+            row.clear();
             for (int k = 0; k < length; ++k)
               if (values[k] != 0.)
-                {
-                  column.push_back(columns[k]);
-                  value.push_back(values[k]);
-                  ++row_length[i];
-                }
-          }
-        make_matrix(m, n, row_length, column, value, pattern, matrix);
-      }
-
-
-      using CompressedRows = AMGPreconditioner::CompressedRows;
-
-
-      /** The nonzeros of @p B as compressed rows. */
-      CompressedRows
-      compressed_rows(const SparseMatrix<double> &B)
-      {
-        CompressedRows rows;
-        rows.n_columns = B.n();
-        rows.rows_begin.push_back(0);
-        std::vector<std::pair<types::global_dof_index, double>> row;
-        for (unsigned int i = 0; i < B.m(); ++i)
-          {
-            row.clear();
-            for (auto b = B.begin(i); b != B.end(i); ++b)
-              if (b->value() != 0.)
-                row.emplace_back(b->column(), b->value());
+                row.emplace_back(columns[k], values[k]);
             std::sort(row.begin(), row.end());
             for (const auto &[j, v] : row)
               {
@@ -223,14 +195,53 @@ namespace TissueContact
       }
 
 
-      /** The Galerkin product @p R @p A @p P (A's nonzeros, in groups of
-       * three rows) as a deal.II matrix with its @p pattern. */
+      /** @p units = the rows of @p R six at a time, their columns
+       * merged (an aggregate's rows under six near-null space vectors share
+       * their columns): unit u's columns units.column[units.start[u]] ...
+       * units.column[units.start[u + 1] - 1], ascending, each with the six
+       * rows' values (zero where a row has none). */
+      template <typename Units>
       void
-      galerkin_product(const CompressedRows &R,
+      merge_rows_by_six(const CompressedRows &R, Units &units)
+      {
+        const unsigned int n = R.n_rows();
+        units.start.assign(1, 0);
+        units.column.clear();
+        units.value.clear();
+        std::vector<std::tuple<types::global_dof_index, unsigned int, double>>
+          entries;
+        for (unsigned int u = 0; 6 * u < n; ++u)
+          {
+            entries.clear();
+            for (unsigned int r = 0; r < 6 && 6 * u + r < n; ++r)
+              for (std::size_t q = R.rows_begin[6 * u + r];
+                   q < R.rows_begin[6 * u + r + 1];
+                   ++q)
+                entries.emplace_back(R.column[q], r, R.value[q]);
+            std::sort(entries.begin(), entries.end());
+            for (std::size_t q = 0; q < entries.size();)
+              {
+                const auto            j = std::get<0>(entries[q]);
+                std::array<double, 6> a{};
+                for (; q < entries.size() && std::get<0>(entries[q]) == j; ++q)
+                  a[std::get<1>(entries[q])] = std::get<2>(entries[q]);
+                units.column.push_back(j);
+                units.value.push_back(a);
+              }
+            units.start.push_back(units.column.size());
+          }
+      }
+
+
+      /** The Galerkin product R @p A @p P (A's nonzeros, in groups of
+       * three rows), with R's @p n_c rows six at a time as
+       * merge_rows_by_six() gives them in @p R. */
+      template <typename Units>
+      CompressedRows
+      galerkin_product(const Units          &R,
+                       const unsigned int    n_c,
                        const NonzeroMatrix  &A,
-                       const CompressedRows &P,
-                       SparsityPattern      &pattern,
-                       SparseMatrix<double> &matrix)
+                       const CompressedRows &P)
       {
         const unsigned int m  = A.m();
         const auto         AP = sparse_product<3>(
@@ -250,56 +261,27 @@ namespace TissueContact
               }
           },
           P);
-        // R's rows six at a time (an aggregate's rows under six near-null
-        // space vectors share their columns), their columns merged
-        const unsigned int n_c = R.rows_begin.size() - 1;
-        const auto         RAP = sparse_product<6>(
+        return sparse_product<6>(
           n_c,
           [&](const types::global_dof_index u, const auto &f) {
-            std::vector<
-              std::tuple<types::global_dof_index, unsigned int, double>>
-              entries;
-            for (unsigned int r = 0; r < 6 && 6 * u + r < n_c; ++r)
-              for (std::size_t q = R.rows_begin[6 * u + r];
-                   q < R.rows_begin[6 * u + r + 1];
-                   ++q)
-                entries.emplace_back(R.column[q], r, R.value[q]);
-            std::sort(entries.begin(), entries.end());
-            for (std::size_t q = 0; q < entries.size();)
-              {
-                const auto            j = std::get<0>(entries[q]);
-                std::array<double, 6> a{};
-                for (; q < entries.size() && std::get<0>(entries[q]) == j; ++q)
-                  a[std::get<1>(entries[q])] = std::get<2>(entries[q]);
-                f(j, a);
-              }
+            for (std::size_t q = R.start[u]; q < R.start[u + 1]; ++q)
+              f(R.column[q], R.value[q]);
           },
           AP);
-        std::vector<unsigned int> row_length(n_c);
-        for (unsigned int i = 0; i < n_c; ++i)
-          row_length[i] = RAP.rows_begin[i + 1] - RAP.rows_begin[i];
-        make_matrix(
-          n_c, P.n_columns, row_length, RAP.column, RAP.value, pattern, matrix);
       }
 
-      /** The nonzeros of @p A as an Epetra matrix for ML (one process),
-       * written row by row in one pass: ML's own copy through
-       * TrilinosWrappers::SparseMatrix took 44 ms per tangent of the full
-       * knee, and the copy of the nonzeros before it 31 ms. */
+      /** An Epetra matrix for ML (one process) of @p n rows, written row
+       * by row in one pass: @p for_each_nonzero(i, f) calls f(j, a) for
+       * row i's nonzeros. */
+      template <typename ForEachNonzero>
       std::unique_ptr<Epetra_CrsMatrix>
-      epetra_nonzeros(const SparseMatrix<double> &A, const Epetra_Map &map)
+      epetra_matrix(const int             n,
+                    const Epetra_Map     &map,
+                    const ForEachNonzero &for_each_nonzero)
       {
-        // a square SparseMatrix stores a row's values one after the other
-        // from its diagonal's on (base/nonzero_matrix.h)
-        const SparsityPattern &pattern = A.get_sparsity_pattern();
-        const int              n       = A.m();
-        std::vector<int>       length(n, 0);
+        std::vector<int> length(n, 0);
         for (int i = 0; i < n; ++i)
-          {
-            const double *a = &A(i, i);
-            for (unsigned int k = 0; k < pattern.row_length(i); ++k)
-              length[i] += (a[k] != 0.);
-          }
+          for_each_nonzero(i, [&](int, double) { ++length[i]; });
         auto matrix = std::make_unique<Epetra_CrsMatrix>(
           Copy, map, map, length.data(), true);
         std::vector<int>    column;
@@ -308,13 +290,10 @@ namespace TissueContact
           {
             column.clear();
             value.clear();
-            const double *a = &A(i, i);
-            for (unsigned int k = 0; k < pattern.row_length(i); ++k)
-              if (a[k] != 0.)
-                {
-                  column.push_back(pattern.column_number(i, k));
-                  value.push_back(a[k]);
-                }
+            for_each_nonzero(i, [&](const int j, const double a) {
+              column.push_back(j);
+              value.push_back(a);
+            });
             const int error = matrix->InsertMyValues(i,
                                                      column.size(),
                                                      value.data(),
@@ -325,6 +304,35 @@ namespace TissueContact
           }
         matrix->FillComplete(map, map);
         return matrix;
+      }
+
+
+      /** The nonzeros of @p A as an Epetra matrix for ML: ML's own copy
+       * through TrilinosWrappers::SparseMatrix took 44 ms per tangent of
+       * the full knee, and the copy of the nonzeros before it 31 ms. */
+      std::unique_ptr<Epetra_CrsMatrix>
+      epetra_nonzeros(const SparseMatrix<double> &A, const Epetra_Map &map)
+      {
+        // a square SparseMatrix stores a row's values one after the other
+        // from its diagonal's on (base/nonzero_matrix.h)
+        const SparsityPattern &pattern = A.get_sparsity_pattern();
+        return epetra_matrix(A.m(), map, [&](const int i, const auto &f) {
+          const double *a = &A(i, i);
+          for (unsigned int k = 0; k < pattern.row_length(i); ++k)
+            if (a[k] != 0.)
+              f(pattern.column_number(i, k), a[k]);
+        });
+      }
+
+
+      /** The entries of @p A as an Epetra matrix. */
+      std::unique_ptr<Epetra_CrsMatrix>
+      epetra_nonzeros(const CompressedRows &A, const Epetra_Map &map)
+      {
+        return epetra_matrix(A.n_rows(), map, [&](const int i, const auto &f) {
+          for (std::size_t k = A.rows_begin[i]; k < A.rows_begin[i + 1]; ++k)
+            f(A.column[k], A.value[k]);
+        });
       }
     } // namespace
 
@@ -391,31 +399,33 @@ namespace TissueContact
           Grid &grid = *grids[l];
           // the finest level's nonzeros from A itself, the coarser ones
           // from ML's Galerkin products
-          SparsityPattern      level_pattern;
-          SparseMatrix<double> level_matrix;
-          const unsigned int   rows_above = l > 0 ? grids[l - 1]->b.size() : 0;
+          const unsigned int rows_above = l > 0 ? grids[l - 1]->b.size() : 0;
+          CompressedRows     level_matrix;
           if (l > 0)
             {
-              read_ml_operator(&ml_levels->Amat[l],
-                               level_pattern,
-                               level_matrix);
-              read_ml_operator(&ml_levels->Pmat[l], grid.P_pattern, grid.P);
-              read_ml_operator(&ml_levels->Rmat[l - 1], grid.R_pattern, grid.R);
-              AssertThrow(grid.P.m() == rows_above &&
-                            grid.P.n() == level_matrix.m() &&
-                            grid.R.m() == level_matrix.m() &&
-                            grid.R.n() == rows_above,
+              level_matrix = read_ml_operator(&ml_levels->Amat[l]);
+              grid.P_rows  = read_ml_operator(&ml_levels->Pmat[l]);
+              const CompressedRows R_rows =
+                read_ml_operator(&ml_levels->Rmat[l - 1]);
+              AssertThrow(grid.P_rows.n_rows() == rows_above &&
+                            grid.P_rows.n_columns == level_matrix.n_rows() &&
+                            R_rows.n_rows() == level_matrix.n_rows() &&
+                            R_rows.n_columns == rows_above,
                           ExcMessage("ML's transfers do not match its "
                                      "levels' sizes"));
-              grid.P_rows = compressed_rows(grid.P);
-              grid.R_rows = compressed_rows(grid.R);
+              make_matrix(grid.P_rows, grid.P_pattern, grid.P);
+              make_matrix(R_rows, grid.R_pattern, grid.R);
+              merge_rows_by_six(R_rows, grid.R_units);
             }
-          const unsigned int rows = l > 0 ? level_matrix.m() : A.m();
+          const unsigned int rows = l > 0 ? level_matrix.n_rows() : A.m();
           grid.b.reinit(rows);
           grid.x.reinit(rows);
           grid.residual.reinit(rows);
           grid.correction.reinit(rows);
-          set_operator(operators[0], l, l > 0 ? level_matrix : A);
+          if (l > 0)
+            set_operator(operators[0], l, level_matrix);
+          else
+            set_operator(operators[0], l, A);
         }
     }
 
@@ -441,14 +451,12 @@ namespace TissueContact
       set_operator(set, 0, A, A_nonzeros);
       for (unsigned int l = 1; l < grids.size(); ++l)
         {
-          SparsityPattern      pattern;
-          SparseMatrix<double> matrix;
-          galerkin_product(grids[l]->R_rows,
-                           *set[l - 1]->A,
-                           grids[l]->P_rows,
-                           pattern,
-                           matrix);
-          set_operator(set, l, matrix);
+          set_operator(set,
+                       l,
+                       galerkin_product(grids[l]->R_units,
+                                        grids[l]->b.size(),
+                                        *set[l - 1]->A,
+                                        grids[l]->P_rows));
         }
       current = target;
     }
@@ -487,69 +495,103 @@ namespace TissueContact
       const SparseMatrix<double>                 &matrix,
       const std::shared_ptr<const NonzeroMatrix> &nonzeros)
     {
-      Level             &level = *set[l];
-      const unsigned int n     = grids.size();
-      if (l + 1 == n)
+      Assert(l == 0, ExcInternalError());
+      Level &level = *set[l];
+      if (grids.size() == 1)
+        // a single level: its factorization
+        factorize(level, matrix.m(), [&](const Epetra_Map &map) {
+          return epetra_nonzeros(matrix, map);
+        });
+      // the smoother lets go of the operator before it is replaced
+      level.smoother.clear();
+      if (nonzeros)
+        level.A = nonzeros;
+      else
         {
-          // the coarsest level: its LU factorization by KLU, as ML's
-          // (a refreshed one's factorization, problem and matrix go
-          // before the map and communicator they were made with)
-          level.direct.reset();
-          level.problem.reset();
-          level.matrix.reset();
-          level.comm = std::make_unique<Epetra_MpiComm>(MPI_COMM_SELF);
-          level.map = std::make_unique<Epetra_Map>(static_cast<int>(matrix.m()),
-                                                   0,
-                                                   *level.comm);
-          level.matrix  = epetra_nonzeros(matrix, *level.map);
-          level.problem = std::make_unique<Epetra_LinearProblem>();
-          level.problem->SetOperator(level.matrix.get());
-          level.direct.reset(Amesos().Create("Amesos_Klu", *level.problem));
-          // a singular coarse operator fails the step like a solve that
-          // does not converge: the increment is cut back
-          if (!(level.direct && level.direct->SymbolicFactorization() == 0 &&
-                level.direct->NumericFactorization() == 0))
-            throw SolveFailed("KLU could not factorize the coarsest level of "
-                              "the AMG hierarchy (a singular coarse "
-                              "operator); try Linear solver/Type = direct");
+          auto own = std::make_shared<NonzeroMatrix>();
+          own->copy_from(matrix);
+          level.A = std::move(own);
         }
-      if (l == 0 || l + 1 < n)
+      set_smoother(level);
+    }
+
+
+    void
+    AMGPreconditioner::set_operator(Operators            &set,
+                                    const unsigned int    l,
+                                    const CompressedRows &matrix)
+    {
+      Assert(l > 0, ExcInternalError());
+      Level &level = *set[l];
+      if (l + 1 == grids.size())
+        factorize(level, matrix.n_rows(), [&](const Epetra_Map &map) {
+          return epetra_nonzeros(matrix, map);
+        });
+      else
         {
-          // its nonzeros, whose rows have the block layout the copy reads
-          // fastest (base/nonzero_matrix.h), and its smoother: Chebyshev of
-          // degree 2 on the Jacobi-scaled matrix over [lambda_max / 10,
-          // lambda_max] (ML's "smoother: Chebyshev alpha" = 10). The scaling
-          // by |a_ii| and the power iteration keep the smoother finite on
-          // the indefinite tangents of deep contact (rows with a_ii < 0),
-          // where a Lanczos estimate with the signed diagonal returned NaN
-          // on tangents of the full knee
-          // the smoother lets go of the operator before it is replaced
           level.smoother.clear();
-          if (nonzeros)
-            level.A = nonzeros;
-          else
-            {
-              auto own = std::make_shared<NonzeroMatrix>();
-              own->copy_from(matrix);
-              level.A = std::move(own);
-            }
-          Smoother::AdditionalData data;
-          data.degree              = 2;
-          data.smoothing_range     = 10.;
-          data.eig_cg_n_iterations = 10;
-          data.eigenvalue_algorithm =
-            Smoother::AdditionalData::EigenvalueAlgorithm::power_iteration;
-          data.preconditioner =
-            std::make_shared<DiagonalMatrix<Vector<double>>>();
-          Vector<double> &inverse_diagonal = data.preconditioner->get_vector();
-          inverse_diagonal.reinit(level.A->m());
-          for (types::global_dof_index i = 0; i < level.A->m(); ++i)
-            {
-              const double a      = std::abs(level.A->diag_element(i));
-              inverse_diagonal[i] = (a > 0. && std::isfinite(a)) ? 1. / a : 1.;
-            }
-          level.smoother.initialize(*level.A, data);
+          auto own = std::make_shared<NonzeroMatrix>();
+          own->copy_from(matrix);
+          level.A = std::move(own);
+          set_smoother(level);
         }
+    }
+
+
+    void
+    AMGPreconditioner::factorize(
+      Level             &level,
+      const unsigned int n,
+      const std::function<std::unique_ptr<Epetra_CrsMatrix>(const Epetra_Map &)>
+        &make_matrix)
+    {
+      // its LU factorization by KLU, as ML's (a refreshed one's
+      // factorization, problem and matrix go before the map and
+      // communicator they were made with)
+      level.direct.reset();
+      level.problem.reset();
+      level.matrix.reset();
+      level.comm = std::make_unique<Epetra_MpiComm>(MPI_COMM_SELF);
+      level.map =
+        std::make_unique<Epetra_Map>(static_cast<int>(n), 0, *level.comm);
+      level.matrix  = make_matrix(*level.map);
+      level.problem = std::make_unique<Epetra_LinearProblem>();
+      level.problem->SetOperator(level.matrix.get());
+      level.direct.reset(Amesos().Create("Amesos_Klu", *level.problem));
+      // a singular coarse operator fails the step like a solve that does
+      // not converge: the increment is cut back
+      if (!(level.direct && level.direct->SymbolicFactorization() == 0 &&
+            level.direct->NumericFactorization() == 0))
+        throw SolveFailed("KLU could not factorize the coarsest level of "
+                          "the AMG hierarchy (a singular coarse operator); "
+                          "try Linear solver/Type = direct");
+    }
+
+
+    void
+    AMGPreconditioner::set_smoother(Level &level)
+    {
+      // Chebyshev of degree 2 on the Jacobi-scaled operator over
+      // [lambda_max / 10, lambda_max] (ML's "smoother: Chebyshev alpha" =
+      // 10). The scaling by |a_ii| and the power iteration keep the
+      // smoother finite on the indefinite tangents of deep contact (rows
+      // with a_ii < 0), where a Lanczos estimate with the signed diagonal
+      // returned NaN on tangents of the full knee
+      Smoother::AdditionalData data;
+      data.degree              = 2;
+      data.smoothing_range     = 10.;
+      data.eig_cg_n_iterations = 10;
+      data.eigenvalue_algorithm =
+        Smoother::AdditionalData::EigenvalueAlgorithm::power_iteration;
+      data.preconditioner = std::make_shared<DiagonalMatrix<Vector<double>>>();
+      Vector<double> &inverse_diagonal = data.preconditioner->get_vector();
+      inverse_diagonal.reinit(level.A->m());
+      for (types::global_dof_index i = 0; i < level.A->m(); ++i)
+        {
+          const double a      = std::abs(level.A->diag_element(i));
+          inverse_diagonal[i] = (a > 0. && std::isfinite(a)) ? 1. / a : 1.;
+        }
+      level.smoother.initialize(*level.A, data);
     }
 
 

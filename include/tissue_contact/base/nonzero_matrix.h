@@ -1,5 +1,7 @@
 #pragma once
 
+#include <tissue_contact/base/compressed_rows.h>
+
 #include <deal.II/base/subscriptor.h>
 #include <deal.II/base/types.h>
 #include <deal.II/lac/sparse_matrix.h>
@@ -48,6 +50,12 @@ namespace TissueContact
     /** Take the nonzeros of the square @p A, and its diagonal. */
     void
     copy_from(const SparseMatrix<double> &A);
+
+    /** Take the square @p A (its rows sorted, without zeros), and its
+     * diagonal: the same as from a SparseMatrix of these entries, without
+     * building one (an AMG level's Galerkin product). */
+    void
+    copy_from(const CompressedRows &A);
 
     /** @p y = A @p x, on the threads. */
     void

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <tissue_contact/base/compressed_rows.h>
 #include <tissue_contact/base/nonzero_matrix.h>
 
 #include <deal.II/lac/diagonal_matrix.h>
@@ -15,6 +16,7 @@
 #include <Epetra_MpiComm.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -118,17 +120,6 @@ namespace TissueContact
         return grids.size();
       }
 
-      /** A sparse matrix's rows one after the other, without zeros: row
-       * i's entries are rows_begin[i] ... rows_begin[i + 1] - 1 of
-       * @p column (ascending) and @p value. */
-      struct CompressedRows
-      {
-        std::vector<std::size_t>             rows_begin;
-        std::vector<types::global_dof_index> column;
-        std::vector<double>                  value;
-        unsigned int                         n_columns = 0;
-      };
-
     private:
       using Smoother = PreconditionChebyshev<NonzeroMatrix,
                                              Vector<double>,
@@ -141,8 +132,16 @@ namespace TissueContact
       {
         SparsityPattern      P_pattern, R_pattern;
         SparseMatrix<double> P, R;
-        /** P and R again, for the Galerkin products of refresh() */
-        CompressedRows         P_rows, R_rows;
+        /** P again, for the Galerkin products of refresh() */
+        CompressedRows P_rows;
+        /** R's rows six at a time, their columns merged, for the same
+         * (merged once per hierarchy, not per refresh) */
+        struct
+        {
+          std::vector<std::size_t>             start;
+          std::vector<types::global_dof_index> column;
+          std::vector<std::array<double, 6>>   value;
+        } R_units;
         mutable Vector<double> b, x, residual, correction;
       };
 
@@ -164,14 +163,35 @@ namespace TissueContact
 
       using Operators = std::vector<std::unique_ptr<Level>>;
 
-      /** Level @p l's operator in @p operators from @p matrix: its
-       * nonzeros (@p nonzeros if given, else a copy) and smoother, or on
-       * the coarsest level its factorization. */
+      /** The finest level's operator (@p l = 0) in @p operators from
+       * @p matrix: its nonzeros (@p nonzeros if given, else a copy) and
+       * smoother, and with a single level its factorization. */
       void
       set_operator(Operators                                  &operators,
                    const unsigned int                          l,
                    const SparseMatrix<double>                 &matrix,
                    const std::shared_ptr<const NonzeroMatrix> &nonzeros = {});
+
+      /** A coarser level's operator (@p l > 0) from @p matrix: its
+       * nonzeros and smoother, or on the coarsest level its factorization
+       * (no SparseMatrix is built: a Galerkin product of the full knee's
+       * finest level spent a third of its time building one). */
+      void
+      set_operator(Operators            &operators,
+                   const unsigned int    l,
+                   const CompressedRows &matrix);
+
+      /** @p level's KLU factorization of the matrix of @p n rows
+       * @p make_matrix writes on the map it is given. */
+      static void
+      factorize(Level                  &level,
+                const unsigned int      n,
+                const std::function<std::unique_ptr<Epetra_CrsMatrix>(
+                  const Epetra_Map &)> &make_matrix);
+
+      /** @p level's smoother of its operator level.A. */
+      static void
+      set_smoother(Level &level);
 
       /** @p x = A_l^{-1} @p b on the coarsest level @p level. */
       static void
