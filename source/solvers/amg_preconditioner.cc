@@ -96,109 +96,10 @@ namespace TissueContact
       }
 
 
-      /** The product A @p B without the stored zeros of either, on the
-       * threads, where A's m rows come in units of @p rows_per_unit
-       * consecutive rows (the last may be cut short at m): @p entries(u,
-       * f) calls f(j, a) for the unit's entries, a[r] the entry in column
-       * j of its row r. A unit's rows share B's rows, read once for all of
-       * them. Each entry is summed in the order @p entries gives, whatever
-       * the number of threads. */
-      template <unsigned int rows_per_unit, typename Entries>
-      CompressedRows
-      sparse_product(const unsigned int    m,
-                     const Entries        &entries,
-                     const CompressedRows &B)
-      {
-        const unsigned int n       = B.n_columns;
-        const unsigned int n_units = (m + rows_per_unit - 1) / rows_per_unit;
-        // the units in blocks, each block's rows gathered on its own and
-        // put one after the other at the end
-        const unsigned int n_blocks = std::min(64u, std::max(1u, n_units / 32));
-        const auto         first_row = [&](const unsigned int block) {
-          return std::min<unsigned int>(m,
-                                        rows_per_unit * (std::size_t(block) *
-                                                         n_units / n_blocks));
-        };
-        std::vector<CompressedRows> part(n_blocks);
-        std::vector<std::size_t>    row_length(m);
-        parallel::apply_to_subranges(
-          0u,
-          n_blocks,
-          [&](const unsigned int first, const unsigned int last) {
-            // the unit's rows of the product, dense, and their columns
-            std::vector<std::array<double, rows_per_unit>> sum(n);
-            std::vector<unsigned int>                      seen(n, 0);
-            std::vector<types::global_dof_index>           columns;
-            unsigned int                                   stamp = 0;
-            for (unsigned int block = first; block < last; ++block)
-              for (unsigned int u = first_row(block) / rows_per_unit;
-                   rows_per_unit * u < first_row(block + 1);
-                   ++u)
-                {
-                  ++stamp;
-                  columns.clear();
-                  entries(u,
-                          [&](const types::global_dof_index            j,
-                              const std::array<double, rows_per_unit> &a) {
-                            for (std::size_t q = B.rows_begin[j];
-                                 q < B.rows_begin[j + 1];
-                                 ++q)
-                              {
-                                const auto k = B.column[q];
-                                if (seen[k] != stamp)
-                                  {
-                                    seen[k] = stamp;
-                                    sum[k].fill(0.);
-                                    columns.push_back(k);
-                                  }
-                                for (unsigned int r = 0; r < rows_per_unit; ++r)
-                                  sum[k][r] += a[r] * B.value[q];
-                              }
-                          });
-                  std::sort(columns.begin(), columns.end());
-                  for (unsigned int r = 0;
-                       r < rows_per_unit && rows_per_unit * u + r < m;
-                       ++r)
-                    {
-                      std::size_t length = 0;
-                      for (const auto k : columns)
-                        if (sum[k][r] != 0.)
-                          {
-                            part[block].column.push_back(k);
-                            part[block].value.push_back(sum[k][r]);
-                            ++length;
-                          }
-                      row_length[rows_per_unit * u + r] = length;
-                    }
-                }
-          },
-          1);
-        CompressedRows product;
-        product.n_columns = n;
-        product.rows_begin.resize(m + 1);
-        product.rows_begin[0] = 0;
-        for (unsigned int i = 0; i < m; ++i)
-          product.rows_begin[i + 1] = product.rows_begin[i] + row_length[i];
-        product.column.resize(product.rows_begin[m]);
-        product.value.resize(product.rows_begin[m]);
-        for (unsigned int block = 0; block < n_blocks; ++block)
-          {
-            const std::size_t start = product.rows_begin[first_row(block)];
-            std::copy(part[block].column.begin(),
-                      part[block].column.end(),
-                      product.column.begin() + start);
-            std::copy(part[block].value.begin(),
-                      part[block].value.end(),
-                      product.value.begin() + start);
-          }
-        return product;
-      }
-
-
       /** @p units = the rows of @p R six at a time, their columns
        * merged (an aggregate's rows under six near-null space vectors share
-       * their columns): unit u's columns units.column[units.start[u]] ...
-       * units.column[units.start[u + 1] - 1], ascending, each with the six
+       * their columns): unit u's columns units.index[units.start[u]] ...
+       * units.index[units.start[u + 1] - 1], ascending, each with the six
        * rows' values (zero where a row has none). */
       template <typename Units>
       void
@@ -206,7 +107,7 @@ namespace TissueContact
       {
         const unsigned int n = R.n_rows();
         units.start.assign(1, 0);
-        units.column.clear();
+        units.index.clear();
         units.value.clear();
         std::vector<std::tuple<types::global_dof_index, unsigned int, double>>
           entries;
@@ -225,49 +126,212 @@ namespace TissueContact
                 std::array<double, 6> a{};
                 for (; q < entries.size() && std::get<0>(entries[q]) == j; ++q)
                   a[std::get<1>(entries[q])] = std::get<2>(entries[q]);
-                units.column.push_back(j);
+                units.index.push_back(j);
                 units.value.push_back(a);
               }
-            units.start.push_back(units.column.size());
+            units.start.push_back(units.index.size());
           }
       }
 
 
-      /** The Galerkin product R @p A @p P (A's nonzeros, in groups of
-       * three rows), with R's @p n_c rows six at a time as
-       * merge_rows_by_six() gives them in @p R. */
-      template <typename Units>
-      CompressedRows
-      galerkin_product(const Units          &R,
-                       const unsigned int    n_c,
-                       const NonzeroMatrix  &A,
-                       const CompressedRows &P)
+      /** @p blocks = the rows of @p P in blocks of six columns. Each row
+       * must lie in one block, as the tentative prolongator's rows of plain
+       * aggregation do with one, three or six near-null space vectors: an
+       * aggregate's coarse unknowns are numbered together. */
+      template <typename Sixes>
+      void
+      rows_in_blocks(const CompressedRows &P, Sixes &blocks)
       {
-        const unsigned int m  = A.m();
-        const auto         AP = sparse_product<3>(
-          m,
-          [&](const types::global_dof_index g, const auto &f) {
-            // the three diagonals, then the other columns ascending
-            for (unsigned int r = 0; r < 3 && 3 * g + r < m; ++r)
+        blocks.start.assign(1, 0);
+        blocks.index.clear();
+        blocks.value.clear();
+        for (types::global_dof_index i = 0; i < P.n_rows(); ++i)
+          {
+            const std::size_t begin = P.rows_begin[i],
+                              end   = P.rows_begin[i + 1];
+            if (end > begin)
               {
-                std::array<double, 3> a{};
-                a[r] = A.diag_element(3 * g + r);
-                f(3 * g + r, a);
+                const types::global_dof_index K = P.column[begin] / 6;
+                std::array<double, 6>         v{};
+                for (std::size_t q = begin; q < end; ++q)
+                  {
+                    AssertThrow(P.column[q] / 6 == K,
+                                ExcMessage("a row of ML's prolongator reaches "
+                                           "two aggregates' coarse unknowns"));
+                    v[P.column[q] % 6] = P.value[q];
+                  }
+                blocks.index.push_back(K);
+                blocks.value.push_back(v);
               }
-            for (std::size_t k = A.group_begin(g); k < A.group_end(g); ++k)
-              {
-                const double *v = A.values_of(k);
-                f(A.column_of(k), {{v[0], v[1], v[2]}});
-              }
+            blocks.start.push_back(blocks.index.size());
+          }
+      }
+
+
+      /** The product A @p B without the zeros of either, B's rows in
+       * blocks of six columns (rows_in_blocks()), of its @p n columns'
+       * @p n / 6 blocks (rounded up), on the threads, where A's m rows come
+       * in units of @p rows_per_unit consecutive rows (the last may be cut
+       * short at m): @p entries(u, f) calls f(j, a) for the unit's entries,
+       * a[r] the entry in column j of its row r. A unit's rows share B's
+       * rows, read once for all of them. The product's rows come in blocks
+       * of six, a block kept where one of its entries is not zero. Each
+       * entry is summed in the order @p entries gives, whatever the number
+       * of threads; a zero of B's blocks adds a zero, which changes no sum,
+       * so the entries are those of the product with B's nonzeros alone to
+       * the bit, for one look-up of a block where that makes one per
+       * column. */
+      template <unsigned int rows_per_unit, typename Entries, typename Sixes>
+      Sixes
+      block_product(const unsigned int m,
+                    const unsigned int n,
+                    const Entries     &entries,
+                    const Sixes       &B)
+      {
+        using Block                = std::array<double, 6>;
+        const unsigned int n_b     = (n + 5) / 6;
+        const unsigned int n_units = (m + rows_per_unit - 1) / rows_per_unit;
+        // the units in parts, each part's rows gathered on its own and put
+        // one after the other at the end
+        const unsigned int n_parts = std::min(64u, std::max(1u, n_units / 32));
+        const auto         first_row = [&](const unsigned int part) {
+          return std::min<unsigned int>(m,
+                                        rows_per_unit * (std::size_t(part) *
+                                                         n_units / n_parts));
+        };
+        std::vector<Sixes>       part(n_parts);
+        std::vector<std::size_t> row_length(m);
+        parallel::apply_to_subranges(
+          0u,
+          n_parts,
+          [&](const unsigned int first, const unsigned int last) {
+            // the unit's rows of the product, dense by block, and the
+            // blocks met
+            std::vector<std::array<Block, rows_per_unit>> sum(n_b);
+            std::vector<unsigned int>                     seen(n_b, 0);
+            std::vector<types::global_dof_index>          blocks;
+            unsigned int                                  stamp = 0;
+            for (unsigned int p = first; p < last; ++p)
+              for (unsigned int u = first_row(p) / rows_per_unit;
+                   rows_per_unit * u < first_row(p + 1);
+                   ++u)
+                {
+                  ++stamp;
+                  blocks.clear();
+                  entries(u,
+                          [&](const types::global_dof_index            j,
+                              const std::array<double, rows_per_unit> &a) {
+                            for (std::size_t q = B.start[j]; q < B.start[j + 1];
+                                 ++q)
+                              {
+                                const auto K = B.index[q];
+                                if (seen[K] != stamp)
+                                  {
+                                    seen[K] = stamp;
+                                    for (Block &row : sum[K])
+                                      row.fill(0.);
+                                    blocks.push_back(K);
+                                  }
+                                const Block &b = B.value[q];
+                                for (unsigned int r = 0; r < rows_per_unit; ++r)
+                                  for (unsigned int c = 0; c < 6; ++c)
+                                    sum[K][r][c] += a[r] * b[c];
+                              }
+                          });
+                  std::sort(blocks.begin(), blocks.end());
+                  for (unsigned int r = 0;
+                       r < rows_per_unit && rows_per_unit * u + r < m;
+                       ++r)
+                    {
+                      std::size_t length = 0;
+                      for (const auto K : blocks)
+                        if (std::any_of(sum[K][r].begin(),
+                                        sum[K][r].end(),
+                                        [](const double v) { return v != 0.; }))
+                          {
+                            part[p].index.push_back(K);
+                            part[p].value.push_back(sum[K][r]);
+                            ++length;
+                          }
+                      row_length[rows_per_unit * u + r] = length;
+                    }
+                }
           },
-          P);
-        return sparse_product<6>(
-          n_c,
-          [&](const types::global_dof_index u, const auto &f) {
-            for (std::size_t q = R.start[u]; q < R.start[u + 1]; ++q)
-              f(R.column[q], R.value[q]);
-          },
-          AP);
+          1);
+        Sixes product;
+        product.start.resize(m + 1);
+        product.start[0] = 0;
+        for (unsigned int i = 0; i < m; ++i)
+          product.start[i + 1] = product.start[i] + row_length[i];
+        product.index.resize(product.start[m]);
+        product.value.resize(product.start[m]);
+        for (unsigned int p = 0; p < n_parts; ++p)
+          {
+            const std::size_t start = product.start[first_row(p)];
+            std::copy(part[p].index.begin(),
+                      part[p].index.end(),
+                      product.index.begin() + start);
+            std::copy(part[p].value.begin(),
+                      part[p].value.end(),
+                      product.value.begin() + start);
+          }
+        return product;
+      }
+
+
+      /** The Galerkin product R @p A P (A's nonzeros, in groups of three
+       * rows), with R's @p n_c rows six at a time as merge_rows_by_six()
+       * gives them in @p R and P's rows in blocks of six in @p P (of
+       * @p n_columns columns). */
+      template <typename Sixes>
+      CompressedRows
+      galerkin_product(const Sixes         &R,
+                       const unsigned int   n_c,
+                       const NonzeroMatrix &A,
+                       const Sixes         &P,
+                       const unsigned int   n_columns)
+      {
+        const unsigned int m = A.m();
+        // A's entries of the vertex g's three rows: the three diagonals,
+        // then the other columns ascending
+        const auto A_entries = [&](const types::global_dof_index g,
+                                   const auto                   &f) {
+          for (unsigned int r = 0; r < 3 && 3 * g + r < m; ++r)
+            {
+              std::array<double, 3> a{};
+              a[r] = A.diag_element(3 * g + r);
+              f(3 * g + r, a);
+            }
+          for (std::size_t k = A.group_begin(g); k < A.group_end(g); ++k)
+            {
+              const double *v = A.values_of(k);
+              f(A.column_of(k), {{v[0], v[1], v[2]}});
+            }
+        };
+        const auto R_entries = [&](const types::global_dof_index u,
+                                   const auto                   &f) {
+          for (std::size_t q = R.start[u]; q < R.start[u + 1]; ++q)
+            f(R.index[q], R.value[q]);
+        };
+        const unsigned int n   = n_columns;
+        const Sixes        AP  = block_product<3>(m, n, A_entries, P);
+        const Sixes        RAP = block_product<6>(n_c, n, R_entries, AP);
+        // the blocks' nonzeros as rows
+        CompressedRows product;
+        product.n_columns = n;
+        product.rows_begin.assign(1, 0);
+        for (unsigned int i = 0; i < n_c; ++i)
+          {
+            for (std::size_t q = RAP.start[i]; q < RAP.start[i + 1]; ++q)
+              for (unsigned int c = 0; c < 6; ++c)
+                if (RAP.value[q][c] != 0.)
+                  {
+                    product.column.push_back(6 * RAP.index[q] + c);
+                    product.value.push_back(RAP.value[q][c]);
+                  }
+            product.rows_begin.push_back(product.column.size());
+          }
+        return product;
       }
 
       /** An Epetra matrix for ML (one process) of @p n rows, written row
@@ -349,6 +413,7 @@ namespace TissueContact
       current  = 0;
       accepted = -1;
       n_rows   = A.m();
+      plain    = !smoothed_aggregation;
       // ML's hierarchy of the nonzeros (doc/theory/04-solver.md
       // sec. 4.5.2), with the project's settings; its smoothers and coarse
       // solver are the cycle's below, not ML's
@@ -404,18 +469,22 @@ namespace TissueContact
           if (l > 0)
             {
               level_matrix = read_ml_operator(&ml_levels->Amat[l]);
-              grid.P_rows  = read_ml_operator(&ml_levels->Pmat[l]);
+              const CompressedRows P_rows =
+                read_ml_operator(&ml_levels->Pmat[l]);
               const CompressedRows R_rows =
                 read_ml_operator(&ml_levels->Rmat[l - 1]);
-              AssertThrow(grid.P_rows.n_rows() == rows_above &&
-                            grid.P_rows.n_columns == level_matrix.n_rows() &&
+              AssertThrow(P_rows.n_rows() == rows_above &&
+                            P_rows.n_columns == level_matrix.n_rows() &&
                             R_rows.n_rows() == level_matrix.n_rows() &&
                             R_rows.n_columns == rows_above,
                           ExcMessage("ML's transfers do not match its "
                                      "levels' sizes"));
-              make_matrix(grid.P_rows, grid.P_pattern, grid.P);
+              make_matrix(P_rows, grid.P_pattern, grid.P);
               make_matrix(R_rows, grid.R_pattern, grid.R);
               merge_rows_by_six(R_rows, grid.R_units);
+              // refresh() takes plain aggregation's transfers only
+              if (!smoothed_aggregation)
+                rows_in_blocks(P_rows, grid.P_blocks);
             }
           const unsigned int rows = l > 0 ? level_matrix.n_rows() : A.m();
           grid.b.reinit(rows);
@@ -438,6 +507,9 @@ namespace TissueContact
       AssertThrow(!grids.empty() && A.m() == m(),
                   ExcMessage("an AMG hierarchy refreshed with a matrix of "
                              "another size"));
+      AssertThrow(plain,
+                  ExcMessage("an AMG hierarchy of smoothed aggregation "
+                             "refreshed (only plain aggregation's is)"));
       // into the set that is not the accepted one
       const unsigned int target =
         accepted < 0 ? current : 1 - static_cast<unsigned int>(accepted);
@@ -456,7 +528,8 @@ namespace TissueContact
                        galerkin_product(grids[l]->R_units,
                                         grids[l]->b.size(),
                                         *set[l - 1]->A,
-                                        grids[l]->P_rows));
+                                        grids[l]->P_blocks,
+                                        grids[l]->P.n()));
         }
       current = target;
     }

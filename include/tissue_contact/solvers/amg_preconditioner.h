@@ -78,6 +78,8 @@ namespace TissueContact
        * @f$A_0 = A@f$ without its stored zeros, and with it the smoothers
        * and the coarsest factorization (doc/theory/04-solver.md sec.
        * 4.5.1). The operators of the last accept() are kept beside them.
+       * A hierarchy of plain aggregation only (initialize()), whose
+       * transfers hold one aggregate's coarse unknowns in a row.
        * With @p A_nonzeros (A's nonzeros as the caller copied them, the
        * Krylov method's operator) the finest level shares that copy instead
        * of copying A again; the caller must not change it while it is
@@ -125,6 +127,20 @@ namespace TissueContact
                                              Vector<double>,
                                              DiagonalMatrix<Vector<double>>>;
 
+      /** Entries in sixes: item u's entries index[start[u]] ...
+       * index[start[u + 1] - 1], each with six values. Either R's rows six
+       * at a time (an item a unit of six rows, an index one of their
+       * columns, the values the six rows' there), or a matrix's rows whose
+       * columns come in blocks of six (an item a row, an index a block
+       * 6 K ... 6 K + 5, the values the row's in those columns, zero where
+       * it has none). */
+      struct Sixes
+      {
+        std::vector<std::size_t>             start;
+        std::vector<types::global_dof_index> index;
+        std::vector<std::array<double, 6>>   value;
+      };
+
       /** A level's transfers from and to the level above (none on the
        * finest), and its vectors: right-hand side, iterate, residual and
        * the correction from below. */
@@ -132,16 +148,12 @@ namespace TissueContact
       {
         SparsityPattern      P_pattern, R_pattern;
         SparseMatrix<double> P, R;
-        /** P again, for the Galerkin products of refresh() */
-        CompressedRows P_rows;
+        /** P again, its rows in blocks of six columns (an aggregate's six
+         * coarse unknowns), for the Galerkin products of refresh() */
+        Sixes P_blocks;
         /** R's rows six at a time, their columns merged, for the same
          * (merged once per hierarchy, not per refresh) */
-        struct
-        {
-          std::vector<std::size_t>             start;
-          std::vector<types::global_dof_index> column;
-          std::vector<std::array<double, 6>>   value;
-        } R_units;
+        Sixes                  R_units;
         mutable Vector<double> b, x, residual, correction;
       };
 
@@ -213,6 +225,8 @@ namespace TissueContact
       int                      accepted = -1;
       /** Rows of the finest level. */
       types::global_dof_index n_rows = 0;
+      /** Whether the hierarchy is of plain aggregation. */
+      bool plain = false;
     };
   } // namespace Solvers
 } // namespace TissueContact
