@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <array>
+#include <tuple>
+#include <utility>
 
 namespace TissueContact
 {
@@ -27,6 +29,29 @@ namespace TissueContact
         500);
     }
   } // namespace
+
+
+  template <typename Count>
+  void
+  NonzeroMatrix::size_groups(const types::global_dof_index n,
+                             const Count                  &count)
+  {
+    const types::global_dof_index groups = (n + 2) / 3;
+    std::vector<std::size_t>      entries(groups, 0);
+    group_start.assign(groups + 1, 0);
+    for_each_row(groups, [&](const types::global_dof_index g) {
+      std::tie(group_start[g + 1], entries[g]) = count(g);
+    });
+    n_nonzeros = n;
+    for (types::global_dof_index g = 0; g < groups; ++g)
+      {
+        group_start[g + 1] += group_start[g];
+        n_nonzeros += entries[g];
+      }
+    column.resize(group_start[groups]);
+    value.resize(3 * group_start[groups]);
+    diagonal.resize(n);
+  }
 
 
   void
@@ -142,9 +167,7 @@ namespace TissueContact
     // Counted without branches on the values: which entries are zero
     // follows no pattern a branch predictor could learn
     std::vector<unsigned int> layout(groups);
-    std::vector<std::size_t>  entries(groups, 0);
-    group_start.assign(groups + 1, 0);
-    for_each_row(groups, [&](const types::global_dof_index g) {
+    size_groups(n, [&](const types::global_dof_index g) {
       layout[g]            = block_layout(g);
       std::size_t columns  = 0;
       std::size_t nonzeros = 0;
@@ -160,22 +183,12 @@ namespace TissueContact
         for_each_block_column(g, layout[g], count);
       else
         for_each_merged_column(g, count);
-      group_start[g + 1] = columns;
-      entries[g]         = nonzeros;
+      return std::make_pair(columns, nonzeros);
     });
-    n_nonzeros = n;
-    for (types::global_dof_index g = 0; g < groups; ++g)
-      {
-        group_start[g + 1] += group_start[g];
-        n_nonzeros += entries[g];
-      }
     // pass 2: the columns and values, each written and kept (the position
     // advanced) only if it has a nonzero, again without a branch on the
     // values; a row's own diagonal among the columns stays zero (its term
     // comes first, from diagonal[])
-    column.resize(group_start[groups]);
-    value.resize(3 * group_start[groups]);
-    diagonal.resize(n);
     for_each_row(groups, [&](const types::global_dof_index g) {
       for (unsigned int c = 0; c < 3 && 3 * g + c < n; ++c)
         diagonal[3 * g + c] = *row_values(3 * g + c);
@@ -248,9 +261,7 @@ namespace TissueContact
     };
     // pass 1: the count of each group's columns (in group_start[g + 1];
     // then their sums) and of its nonzeros
-    std::vector<std::size_t> entries(groups, 0);
-    group_start.assign(groups + 1, 0);
-    for_each_row(groups, [&](const types::global_dof_index g) {
+    size_groups(n, [&](const types::global_dof_index g) {
       std::size_t columns = 0, nonzeros = 0;
       for_each_column(g,
                       [&](types::global_dof_index,
@@ -258,20 +269,10 @@ namespace TissueContact
                         ++columns;
                         nonzeros += (a[0] != 0.) + (a[1] != 0.) + (a[2] != 0.);
                       });
-      group_start[g + 1] = columns;
-      entries[g]         = nonzeros;
+      return std::make_pair(columns, nonzeros);
     });
-    n_nonzeros = n;
-    for (types::global_dof_index g = 0; g < groups; ++g)
-      {
-        group_start[g + 1] += group_start[g];
-        n_nonzeros += entries[g];
-      }
     // pass 2: the diagonals (zero where a row stores none), the columns and
     // values
-    column.resize(group_start[groups]);
-    value.resize(3 * group_start[groups]);
-    diagonal.resize(n);
     for_each_row(groups, [&](const types::global_dof_index g) {
       for (types::global_dof_index i = 3 * g; i < std::min(3 * g + 3, n); ++i)
         {

@@ -138,6 +138,14 @@ namespace TissueContact
     }
 
   private:
+    /** Pass 1 of a copy of a matrix of @p n rows: group g's count of
+     * columns and of nonzeros off the diagonal, @p count(g) (a pair), on
+     * the threads; group_start and n_nonzeros from them, the arrays sized
+     * for pass 2. */
+    template <typename Count>
+    void
+    size_groups(const types::global_dof_index n, const Count &count);
+
     /** @p y = A @p x, or @p y = *@p b - A @p x if @p residual. */
     template <bool residual>
     void
