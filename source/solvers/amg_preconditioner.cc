@@ -24,34 +24,6 @@ namespace TissueContact
   {
     namespace
     {
-      /** @p matrix (and its @p pattern) with the entries of @p rows. */
-      void
-      make_matrix(const CompressedRows &rows,
-                  SparsityPattern      &pattern,
-                  SparseMatrix<double> &matrix)
-      {
-        const unsigned int m = rows.n_rows(), n = rows.n_columns;
-        // a square pattern stores each row's diagonal, present or not
-        std::vector<unsigned int> capacity(m);
-        for (unsigned int i = 0; i < m; ++i)
-          capacity[i] =
-            rows.rows_begin[i + 1] - rows.rows_begin[i] + (m == n ? 1 : 0);
-        pattern.reinit(m, n, capacity);
-        for (unsigned int i = 0; i < m; ++i)
-          pattern.add_entries(i,
-                              rows.column.begin() + rows.rows_begin[i],
-                              rows.column.begin() + rows.rows_begin[i + 1],
-                              true);
-        pattern.compress();
-        matrix.reinit(pattern);
-        for (unsigned int i = 0; i < m; ++i)
-          matrix.set(i,
-                     rows.rows_begin[i + 1] - rows.rows_begin[i],
-                     rows.column.data() + rows.rows_begin[i],
-                     rows.value.data() + rows.rows_begin[i]);
-      }
-
-
       /** The entries of one of ML's operators (a level's matrix, a
        * prolongator or a restriction; one process: its local indices are
        * the global ones) without its zeros, each row sorted (ML's rows need
@@ -134,32 +106,28 @@ namespace TissueContact
       }
 
 
-      /** @p blocks = the rows of @p P in blocks of six columns. Each row
-       * must lie in one block, as the tentative prolongator's rows of plain
-       * aggregation do with one, three or six near-null space vectors: an
-       * aggregate's coarse unknowns are numbered together. */
+      /** @p blocks = the rows of @p P in blocks of six columns, a block
+       * 6 K ... 6 K + 5 kept where the row has an entry in it. A row of plain
+       * aggregation's tentative prolongator lies in one block, its
+       * aggregate's coarse unknowns (one, three or six near-null space
+       * vectors, numbered together); one of smoothed aggregation's reaches
+       * a few neighbouring aggregates. */
       template <typename Sixes>
       void
-      rows_in_blocks(const CompressedRows &P, Sixes &blocks)
+      rows_by_blocks(const CompressedRows &P, Sixes &blocks)
       {
         blocks.start.assign(1, 0);
         blocks.index.clear();
         blocks.value.clear();
         for (types::global_dof_index i = 0; i < P.n_rows(); ++i)
           {
-            const std::size_t begin = P.rows_begin[i],
-                              end   = P.rows_begin[i + 1];
-            if (end > begin)
+            // the row's columns ascend, so do its blocks
+            for (std::size_t q = P.rows_begin[i]; q < P.rows_begin[i + 1];)
               {
-                const types::global_dof_index K = P.column[begin] / 6;
+                const types::global_dof_index K = P.column[q] / 6;
                 std::array<double, 6>         v{};
-                for (std::size_t q = begin; q < end; ++q)
-                  {
-                    AssertThrow(P.column[q] / 6 == K,
-                                ExcMessage("a row of ML's prolongator reaches "
-                                           "two aggregates' coarse unknowns"));
-                    v[P.column[q] % 6] = P.value[q];
-                  }
+                for (; q < P.rows_begin[i + 1] && P.column[q] / 6 == K; ++q)
+                  v[P.column[q] % 6] = P.value[q];
                 blocks.index.push_back(K);
                 blocks.value.push_back(v);
               }
@@ -168,8 +136,75 @@ namespace TissueContact
       }
 
 
+      /** @p y = P @p x for P's rows in blocks of six columns
+       * (rows_by_blocks()), on the threads: each row summed from zero over
+       * its columns in ascending order as SparseMatrix::vmult() does (a zero
+       * of a block adds a zero, which changes no sum), the same to the
+       * bit. */
+      template <typename Sixes>
+      void
+      prolongate(const Sixes &P, Vector<double> &y, const Vector<double> &x)
+      {
+        parallel::apply_to_subranges(
+          types::global_dof_index(0),
+          types::global_dof_index(y.size()),
+          [&](const types::global_dof_index begin,
+              const types::global_dof_index end) {
+            for (types::global_dof_index i = begin; i < end; ++i)
+              {
+                double s = 0.;
+                for (std::size_t q = P.start[i]; q < P.start[i + 1]; ++q)
+                  {
+                    // the last block may reach past x's end (a coarse
+                    // level of 6 k + 1 ... 5 unknowns); its entries there
+                    // are zero and not read
+                    const types::global_dof_index first = 6 * P.index[q];
+                    const unsigned int            width =
+                      std::min<types::global_dof_index>(6, x.size() - first);
+                    const double *xK = x.begin() + first;
+                    const auto   &v  = P.value[q];
+                    for (unsigned int c = 0; c < width; ++c)
+                      s += v[c] * xK[c];
+                  }
+                y[i] = s;
+              }
+          },
+          1000);
+      }
+
+
+      /** @p y = R @p x for R's rows six at a time (merge_rows_by_six()),
+       * on the threads: each row summed as SparseMatrix::vmult() does, the
+       * same to the bit. */
+      template <typename Sixes>
+      void
+      restrict_to(const Sixes &R, Vector<double> &y, const Vector<double> &x)
+      {
+        const types::global_dof_index n = y.size();
+        parallel::apply_to_subranges(
+          types::global_dof_index(0),
+          types::global_dof_index(R.start.size() - 1),
+          [&](const types::global_dof_index begin,
+              const types::global_dof_index end) {
+            for (types::global_dof_index u = begin; u < end; ++u)
+              {
+                std::array<double, 6> s{};
+                for (std::size_t q = R.start[u]; q < R.start[u + 1]; ++q)
+                  {
+                    const double xj = x[R.index[q]];
+                    for (unsigned int r = 0; r < 6; ++r)
+                      s[r] += R.value[q][r] * xj;
+                  }
+                for (unsigned int r = 0; r < 6 && 6 * u + r < n; ++r)
+                  y[6 * u + r] = s[r];
+              }
+          },
+          100);
+      }
+
+
       /** The product A @p B without the zeros of either, B's rows in
-       * blocks of six columns (rows_in_blocks()), of its @p n columns'
+       * blocks of six columns (rows_by_blocks()), of its @p n columns'
        * @p n / 6 blocks (rounded up), on the threads, where A's m rows come
        * in units of @p rows_per_unit consecutive rows (the last may be cut
        * short at m): @p entries(u, f) calls f(j, a) for the unit's entries,
@@ -413,7 +448,6 @@ namespace TissueContact
       current  = 0;
       accepted = -1;
       n_rows   = A.m();
-      plain    = !smoothed_aggregation;
       // ML's hierarchy of the nonzeros (doc/theory/04-solver.md
       // sec. 4.5.2), with the project's settings; its smoothers and coarse
       // solver are the cycle's below, not ML's
@@ -479,12 +513,8 @@ namespace TissueContact
                             R_rows.n_columns == rows_above,
                           ExcMessage("ML's transfers do not match its "
                                      "levels' sizes"));
-              make_matrix(P_rows, grid.P_pattern, grid.P);
-              make_matrix(R_rows, grid.R_pattern, grid.R);
               merge_rows_by_six(R_rows, grid.R_units);
-              // refresh() takes plain aggregation's transfers only
-              if (!smoothed_aggregation)
-                rows_in_blocks(P_rows, grid.P_blocks);
+              rows_by_blocks(P_rows, grid.P_blocks);
             }
           const unsigned int rows = l > 0 ? level_matrix.n_rows() : A.m();
           grid.b.reinit(rows);
@@ -507,9 +537,6 @@ namespace TissueContact
       AssertThrow(!grids.empty() && A.m() == m(),
                   ExcMessage("an AMG hierarchy refreshed with a matrix of "
                              "another size"));
-      AssertThrow(plain,
-                  ExcMessage("an AMG hierarchy of smoothed aggregation "
-                             "refreshed (only plain aggregation's is)"));
       // into the set that is not the accepted one
       const unsigned int target =
         accepted < 0 ? current : 1 - static_cast<unsigned int>(accepted);
@@ -529,7 +556,7 @@ namespace TissueContact
                                         grids[l]->b.size(),
                                         *set[l - 1]->A,
                                         grids[l]->P_blocks,
-                                        grids[l]->P.n()));
+                                        grids[l]->b.size()));
         }
       current = target;
     }
@@ -705,9 +732,9 @@ namespace TissueContact
       else
         {
           const Grid &coarse = *grids[l + 1];
-          coarse.R.vmult(coarse.b, grid.residual);
+          restrict_to(coarse.R_units, coarse.b, grid.residual);
           cycle(l + 1, coarse.x, coarse.b);
-          coarse.P.vmult(grid.correction, coarse.x);
+          prolongate(coarse.P_blocks, grid.correction, coarse.x);
         }
       x += grid.correction;
       // x = x_2 + S (b - A x_2)

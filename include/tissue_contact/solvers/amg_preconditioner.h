@@ -78,8 +78,6 @@ namespace TissueContact
        * @f$A_0 = A@f$ without its stored zeros, and with it the smoothers
        * and the coarsest factorization (doc/theory/04-solver.md sec.
        * 4.5.1). The operators of the last accept() are kept beside them.
-       * A hierarchy of plain aggregation only (initialize()), whose
-       * transfers hold one aggregate's coarse unknowns in a row.
        * With @p A_nonzeros (A's nonzeros as the caller copied them, the
        * Krylov method's operator) the finest level shares that copy instead
        * of copying A again; the caller must not change it while it is
@@ -146,14 +144,11 @@ namespace TissueContact
        * the correction from below. */
       struct Grid
       {
-        SparsityPattern      P_pattern, R_pattern;
-        SparseMatrix<double> P, R;
-        /** P again, its rows in blocks of six columns (an aggregate's six
-         * coarse unknowns), for the Galerkin products of refresh() */
-        Sixes P_blocks;
-        /** R's rows six at a time, their columns merged, for the same
-         * (merged once per hierarchy, not per refresh) */
-        Sixes                  R_units;
+        /** P, its rows in blocks of six columns (an aggregate's six coarse
+         * unknowns), and R, its rows six at a time, their columns merged:
+         * the cycle's transfers and the Galerkin products' factors of
+         * refresh(), both made once per hierarchy */
+        Sixes                  P_blocks, R_units;
         mutable Vector<double> b, x, residual, correction;
       };
 
@@ -225,8 +220,6 @@ namespace TissueContact
       int                      accepted = -1;
       /** Rows of the finest level. */
       types::global_dof_index n_rows = 0;
-      /** Whether the hierarchy is of plain aggregation. */
-      bool plain = false;
     };
   } // namespace Solvers
 } // namespace TissueContact
