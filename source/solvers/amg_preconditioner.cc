@@ -315,16 +315,15 @@ namespace TissueContact
 
 
       /** The Galerkin product R @p A P (A's nonzeros, in groups of three
-       * rows), with R's @p n_c rows six at a time as merge_rows_by_six()
-       * gives them in @p R and P's rows in blocks of six in @p P (of
-       * @p n_columns columns). */
+       * rows) on a coarse level of @p n_c unknowns (R's rows, P's columns),
+       * with R's rows six at a time as merge_rows_by_six() gives them in
+       * @p R and P's rows in blocks of six in @p P. */
       template <typename Sixes>
       CompressedRows
       galerkin_product(const Sixes         &R,
-                       const unsigned int   n_c,
                        const NonzeroMatrix &A,
                        const Sixes         &P,
-                       const unsigned int   n_columns)
+                       const unsigned int   n_c)
       {
         const unsigned int m = A.m();
         // A's entries of the vertex g's three rows: the three diagonals,
@@ -348,12 +347,11 @@ namespace TissueContact
           for (std::size_t q = R.start[u]; q < R.start[u + 1]; ++q)
             f(R.index[q], R.value[q]);
         };
-        const unsigned int n   = n_columns;
-        const Sixes        AP  = block_product<3>(m, n, A_entries, P);
-        const Sixes        RAP = block_product<6>(n_c, n, R_entries, AP);
+        const Sixes AP  = block_product<3>(m, n_c, A_entries, P);
+        const Sixes RAP = block_product<6>(n_c, n_c, R_entries, AP);
         // the blocks' nonzeros as rows
         CompressedRows product;
-        product.n_columns = n;
+        product.n_columns = n_c;
         product.rows_begin.assign(1, 0);
         for (unsigned int i = 0; i < n_c; ++i)
           {
@@ -553,7 +551,6 @@ namespace TissueContact
           set_operator(set,
                        l,
                        galerkin_product(grids[l]->R_units,
-                                        grids[l]->b.size(),
                                         *set[l - 1]->A,
                                         grids[l]->P_blocks,
                                         grids[l]->b.size()));

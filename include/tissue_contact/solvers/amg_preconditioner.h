@@ -181,8 +181,8 @@ namespace TissueContact
 
       /** A coarser level's operator (@p l > 0) from @p matrix: its
        * nonzeros and smoother, or on the coarsest level its factorization
-       * (no SparseMatrix is built: a Galerkin product of the full knee's
-       * finest level spent a third of its time building one). */
+       * (no SparseMatrix is built: a refresh of the full knee spent a
+       * third of its time building one per level). */
       void
       set_operator(Operators            &operators,
                    const unsigned int    l,
