@@ -207,8 +207,9 @@ namespace TissueContact
        * blocks of six columns (rows_by_blocks()), of its @p n columns'
        * @p n / 6 blocks (rounded up), on the threads, where A's m rows come
        * in units of @p rows_per_unit consecutive rows (the last may be cut
-       * short at m): @p entries(u, f) calls f(j, a) for the unit's entries,
-       * a[r] the entry in column j of its row r. A unit's rows share B's
+       * short at m): @p entries(u, f, f3) calls f(j, a) for the unit's
+       * entries, a[r] the entry in column j of its row r, or f3(j, a0, a1,
+       * a2) for columns j, j + 1, j + 2 in turn. A unit's rows share B's
        * rows, read once for all of them. The product's rows come in blocks
        * of six, a block kept where one of its entries is not zero. Each
        * entry is summed in the order @p entries gives, whatever the number
@@ -253,26 +254,77 @@ namespace TissueContact
                 {
                   ++stamp;
                   blocks.clear();
-                  entries(u,
-                          [&](const types::global_dof_index            j,
-                              const std::array<double, rows_per_unit> &a) {
-                            for (std::size_t q = B.start[j]; q < B.start[j + 1];
-                                 ++q)
-                              {
-                                const auto K = B.index[q];
-                                if (seen[K] != stamp)
-                                  {
-                                    seen[K] = stamp;
-                                    for (Block &row : sum[K])
-                                      row.fill(0.);
-                                    blocks.push_back(K);
-                                  }
-                                const Block &b = B.value[q];
-                                for (unsigned int r = 0; r < rows_per_unit; ++r)
-                                  for (unsigned int c = 0; c < 6; ++c)
-                                    sum[K][r][c] += a[r] * b[c];
-                              }
-                          });
+                  // block K of the unit's rows, zeroed when first met
+                  const auto block_of = [&](const types::global_dof_index K)
+                    -> std::array<Block, rows_per_unit> & {
+                    if (seen[K] != stamp)
+                      {
+                        seen[K] = stamp;
+                        for (Block &row : sum[K])
+                          row.fill(0.);
+                        blocks.push_back(K);
+                      }
+                    return sum[K];
+                  };
+                  // column j's entries a of the unit's rows: a (x) B's row j
+                  const auto add =
+                    [&](const types::global_dof_index            j,
+                        const std::array<double, rows_per_unit> &a) {
+                      for (std::size_t q = B.start[j]; q < B.start[j + 1]; ++q)
+                        {
+                          auto        &s = block_of(B.index[q]);
+                          const Block &b = B.value[q];
+                          for (unsigned int r = 0; r < rows_per_unit; ++r)
+                            for (unsigned int c = 0; c < 6; ++c)
+                              s[r][c] += a[r] * b[c];
+                        }
+                    };
+                  // columns j, j + 1, j + 2 one after the other; where B's
+                  // three rows have the same blocks (a vertex's three
+                  // unknowns: one block, their aggregate's, in a tentative
+                  // prolongator; the same blocks of coarse columns in A P)
+                  // each sum takes the three terms in turn while it is at
+                  // hand: the same additions in the same order as three
+                  // calls of add()
+                  const auto add_three =
+                    [&](const types::global_dof_index            j,
+                        const std::array<double, rows_per_unit> &a0,
+                        const std::array<double, rows_per_unit> &a1,
+                        const std::array<double, rows_per_unit> &a2) {
+                      const std::size_t q0 = B.start[j];
+                      const std::size_t l  = B.start[j + 1] - q0;
+                      if (B.start[j + 2] - B.start[j + 1] == l &&
+                          B.start[j + 3] - B.start[j + 2] == l &&
+                          std::equal(B.index.begin() + q0,
+                                     B.index.begin() + q0 + l,
+                                     B.index.begin() + q0 + l) &&
+                          std::equal(B.index.begin() + q0,
+                                     B.index.begin() + q0 + l,
+                                     B.index.begin() + q0 + 2 * l))
+                        for (std::size_t q = q0; q < q0 + l; ++q)
+                          {
+                            auto        &s  = block_of(B.index[q]);
+                            const Block &b0 = B.value[q];
+                            const Block &b1 = B.value[q + l];
+                            const Block &b2 = B.value[q + 2 * l];
+                            for (unsigned int r = 0; r < rows_per_unit; ++r)
+                              for (unsigned int c = 0; c < 6; ++c)
+                                {
+                                  double t = s[r][c];
+                                  t += a0[r] * b0[c];
+                                  t += a1[r] * b1[c];
+                                  t += a2[r] * b2[c];
+                                  s[r][c] = t;
+                                }
+                          }
+                      else
+                        {
+                          add(j, a0);
+                          add(j + 1, a1);
+                          add(j + 2, a2);
+                        }
+                    };
+                  entries(u, add, add_three);
                   std::sort(blocks.begin(), blocks.end());
                   for (unsigned int r = 0;
                        r < rows_per_unit && rows_per_unit * u + r < m;
@@ -328,31 +380,57 @@ namespace TissueContact
         const unsigned int m = A.m();
         // A's entries of the vertex g's three rows: the three diagonals,
         // then the other columns ascending
-        const auto A_entries = [&](const types::global_dof_index g,
-                                   const auto                   &f) {
-          for (unsigned int r = 0; r < 3 && 3 * g + r < m; ++r)
-            {
-              std::array<double, 3> a{};
-              a[r] = A.diag_element(3 * g + r);
-              f(3 * g + r, a);
-            }
-          for (std::size_t k = A.group_begin(g); k < A.group_end(g); ++k)
-            {
+        const auto A_entries =
+          [&](const types::global_dof_index g, const auto &f, const auto &f3) {
+            for (unsigned int r = 0; r < 3 && 3 * g + r < m; ++r)
+              {
+                std::array<double, 3> a{};
+                a[r] = A.diag_element(3 * g + r);
+                f(3 * g + r, a);
+              }
+            const auto entry = [&](const std::size_t k) {
               const double *v = A.values_of(k);
-              f(A.column_of(k), {{v[0], v[1], v[2]}});
-            }
-        };
-        const auto R_entries = [&](const types::global_dof_index u,
-                                   const auto                   &f) {
-          for (std::size_t q = R.start[u]; q < R.start[u + 1]; ++q)
-            f(R.index[q], R.value[q]);
-        };
+              return std::array<double, 3>{{v[0], v[1], v[2]}};
+            };
+            // a vertex's three columns together where all three are kept
+            for (std::size_t k = A.group_begin(g); k < A.group_end(g);)
+              {
+                const types::global_dof_index j = A.column_of(k);
+                if (k + 2 < A.group_end(g) && A.column_of(k + 2) == j + 2)
+                  {
+                    f3(j, entry(k), entry(k + 1), entry(k + 2));
+                    k += 3;
+                  }
+                else
+                  {
+                    f(j, entry(k));
+                    ++k;
+                  }
+              }
+          };
+        const auto R_entries =
+          [&](const types::global_dof_index u, const auto &f, const auto &f3) {
+            for (std::size_t q = R.start[u]; q < R.start[u + 1];)
+              if (q + 2 < R.start[u + 1] && R.index[q + 2] == R.index[q] + 2)
+                {
+                  f3(R.index[q], R.value[q], R.value[q + 1], R.value[q + 2]);
+                  q += 3;
+                }
+              else
+                {
+                  f(R.index[q], R.value[q]);
+                  ++q;
+                }
+          };
         const Sixes AP  = block_product<3>(m, n_c, A_entries, P);
         const Sixes RAP = block_product<6>(n_c, n_c, R_entries, AP);
         // the blocks' nonzeros as rows
         CompressedRows product;
         product.n_columns = n_c;
+        product.rows_begin.reserve(n_c + 1);
         product.rows_begin.assign(1, 0);
+        product.column.reserve(6 * RAP.index.size());
+        product.value.reserve(6 * RAP.index.size());
         for (unsigned int i = 0; i < n_c; ++i)
           {
             for (std::size_t q = RAP.start[i]; q < RAP.start[i + 1]; ++q)
