@@ -366,6 +366,31 @@ namespace TissueContact
       }
 
 
+      /** The entries @p first ... @p last - 1 of a row (or unit) whose
+       * columns @p column(k) ascend, in order: @p three(k) for entries k,
+       * k + 1, k + 2 in columns j, j + 1, j + 2, else @p one(k). */
+      template <typename Column, typename One, typename Three>
+      void
+      by_threes(const std::size_t first,
+                const std::size_t last,
+                const Column     &column,
+                const One        &one,
+                const Three      &three)
+      {
+        for (std::size_t k = first; k < last;)
+          if (k + 2 < last && column(k + 2) == column(k) + 2)
+            {
+              three(k);
+              k += 3;
+            }
+          else
+            {
+              one(k);
+              ++k;
+            }
+      }
+
+
       /** The Galerkin product R @p A P (A's nonzeros, in groups of three
        * rows) on a coarse level of @p n_c unknowns (R's rows, P's columns),
        * with R's rows six at a time as merge_rows_by_six() gives them in
@@ -393,34 +418,25 @@ namespace TissueContact
               return std::array<double, 3>{{v[0], v[1], v[2]}};
             };
             // a vertex's three columns together where all three are kept
-            for (std::size_t k = A.group_begin(g); k < A.group_end(g);)
-              {
-                const types::global_dof_index j = A.column_of(k);
-                if (k + 2 < A.group_end(g) && A.column_of(k + 2) == j + 2)
-                  {
-                    f3(j, entry(k), entry(k + 1), entry(k + 2));
-                    k += 3;
-                  }
-                else
-                  {
-                    f(j, entry(k));
-                    ++k;
-                  }
-              }
+            by_threes(
+              A.group_begin(g),
+              A.group_end(g),
+              [&](const std::size_t k) { return A.column_of(k); },
+              [&](const std::size_t k) { f(A.column_of(k), entry(k)); },
+              [&](const std::size_t k) {
+                f3(A.column_of(k), entry(k), entry(k + 1), entry(k + 2));
+              });
           };
         const auto R_entries =
           [&](const types::global_dof_index u, const auto &f, const auto &f3) {
-            for (std::size_t q = R.start[u]; q < R.start[u + 1];)
-              if (q + 2 < R.start[u + 1] && R.index[q + 2] == R.index[q] + 2)
-                {
-                  f3(R.index[q], R.value[q], R.value[q + 1], R.value[q + 2]);
-                  q += 3;
-                }
-              else
-                {
-                  f(R.index[q], R.value[q]);
-                  ++q;
-                }
+            by_threes(
+              R.start[u],
+              R.start[u + 1],
+              [&](const std::size_t q) { return R.index[q]; },
+              [&](const std::size_t q) { f(R.index[q], R.value[q]); },
+              [&](const std::size_t q) {
+                f3(R.index[q], R.value[q], R.value[q + 1], R.value[q + 2]);
+              });
           };
         const Sixes AP  = block_product<3>(m, n_c, A_entries, P);
         const Sixes RAP = block_product<6>(n_c, n_c, R_entries, AP);
