@@ -712,13 +712,17 @@ namespace TissueContact
             R[dofs[k]] += copy.r[k];
         if (by_position)
           {
+            // the offsets are within the rows (use_matrix_pattern())
             const unsigned int *at =
               &positions[std::size_t(copy.cell) * n_local * n_local];
-            const double *k = &copy.K(0, 0);
+            const double *k      = &copy.K(0, 0);
+            const auto    row_of = [&](const unsigned int i) {
+              return values + positions_row_start[dofs[i]];
+            };
             if (copy.upper && !node_positions.empty())
               {
-                // node by node (use_matrix_pattern()): a row's three
-                // columns of a node follow each other in the values
+                // node by node: a row's three columns of a node follow
+                // each other in the values
                 const unsigned int  per_row = n_nodes + 1;
                 const unsigned int *np =
                   &node_positions[std::size_t(copy.cell) * n_local * per_row];
@@ -730,16 +734,17 @@ namespace TissueContact
                         continue;
                       const unsigned int *P  = np + row * per_row;
                       const double       *kr = k + row * n_local;
+                      double             *v  = row_of(row);
                       for (unsigned int b = 0; b < a; ++b)
                         for (unsigned int j = 0; j < 3; ++j)
-                          values[P[b] + j] += k[(3 * b + j) * n_local + row];
-                      values[P[n_nodes]] += kr[row];
+                          v[P[b] + j] += k[(3 * b + j) * n_local + row];
+                      v[P[n_nodes]] += kr[row];
                       for (unsigned int j = 0, offset = 0; j < 3; ++j)
                         if (j != i)
-                          values[P[a] + offset++] += kr[3 * a + j];
+                          v[P[a] + offset++] += kr[3 * a + j];
                       for (unsigned int b = a + 1; b < n_nodes; ++b)
                         for (unsigned int j = 0; j < 3; ++j)
-                          values[P[b] + j] += kr[3 * b + j];
+                          v[P[b] + j] += kr[3 * b + j];
                     }
               }
             else if (copy.upper)
@@ -749,18 +754,22 @@ namespace TissueContact
                     const unsigned int row = 3 * a + i;
                     if (!mine(row))
                       continue;
+                    double *v = row_of(row);
                     for (unsigned int b = 0; b < a; ++b)
                       for (unsigned int j = 0; j < 3; ++j)
-                        values[at[row * n_local + 3 * b + j]] +=
+                        v[at[row * n_local + 3 * b + j]] +=
                           k[(3 * b + j) * n_local + row];
                     for (unsigned int col = 3 * a; col < n_local; ++col)
-                      values[at[row * n_local + col]] += k[row * n_local + col];
+                      v[at[row * n_local + col]] += k[row * n_local + col];
                   }
             else
               for (unsigned int i = 0; i < n_local; ++i)
                 if (mine(i))
-                  for (unsigned int j = 0; j < n_local; ++j)
-                    values[at[i * n_local + j]] += k[i * n_local + j];
+                  {
+                    double *v = row_of(i);
+                    for (unsigned int j = 0; j < n_local; ++j)
+                      v[at[i * n_local + j]] += k[i * n_local + j];
+                  }
           }
         else if (K != nullptr)
           {
@@ -902,98 +911,95 @@ namespace TissueContact
                     std::numeric_limits<unsigned int>::max(),
                   ExcNotImplemented());
       const unsigned int n_cells = cell_material.size();
-      positions.resize(std::size_t(n_cells) * n_local * n_local);
-      // the rows of this pattern, and which of them have the columns they
-      // had in the pattern the positions were found in: their entries keep
-      // their offsets within the row (a pattern build changes the rows of
-      // the contact couplings only; searching all rows again was a quarter
-      // of a build on the coarse knee)
-      const auto                           n_rows = pattern.n_rows();
-      std::vector<std::size_t>             row_start(n_rows + 1, 0);
-      std::vector<types::global_dof_index> columns;
-      columns.reserve(pattern.n_nonzero_elements());
+      const unsigned int per_row = n_nodes + 1;
+      // the rows of this pattern: their starts (a compressed pattern stores
+      // its rows one after the other), their columns, and which rows have
+      // the columns they had in the pattern of the last call. The offsets
+      // within a row are stored, so the cells whose rows all kept their
+      // columns keep theirs: a pattern build changes the rows of the contact
+      // couplings only (the cells' positions found anew at every build were
+      // 40 % of a build on the full knee; doc/theory/02 sec. 2.4)
+      const auto               n_rows = pattern.n_rows();
+      std::vector<std::size_t> row_start(n_rows + 1, 0);
       for (types::global_dof_index r = 0; r < n_rows; ++r)
-        {
-          row_start[r] = columns.size();
-          for (auto e = pattern.begin(r); e != pattern.end(r); ++e)
-            columns.push_back(e->column());
-        }
-      row_start[n_rows]           = columns.size();
-      const bool        have_rows = positions_row_start.size() == n_rows + 1;
-      std::vector<bool> same(n_rows, false);
-      if (have_rows)
-        for (types::global_dof_index r = 0; r < n_rows; ++r)
-          same[r] =
-            row_start[r + 1] - row_start[r] ==
-              positions_row_start[r + 1] - positions_row_start[r] &&
-            std::equal(columns.begin() + row_start[r],
-                       columns.begin() + row_start[r + 1],
-                       positions_columns.begin() + positions_row_start[r]);
-      // the cells in parallel (each writes only its own positions): a
-      // shift per entry of an unchanged row, else one binary search per
-      // local entry (half the cost of a pattern build on the knee-scale
-      // tube when done serially)
-      std::atomic<bool> all_found{true};
+        row_start[r + 1] = row_start[r] + pattern.row_length(r);
+      std::vector<types::global_dof_index> columns(row_start[n_rows]);
+      const bool                           have_rows =
+        positions_row_start.size() == n_rows + 1 &&
+        positions.size() == std::size_t(n_cells) * n_local * n_local;
+      std::vector<unsigned char> same(n_rows, 0);
+      parallel::apply_to_subranges(
+        types::global_dof_index(0),
+        n_rows,
+        [&](const types::global_dof_index begin,
+            const types::global_dof_index end) {
+          for (types::global_dof_index r = begin; r < end; ++r)
+            {
+              const std::size_t length = row_start[r + 1] - row_start[r];
+              for (std::size_t k = 0; k < length; ++k)
+                columns[row_start[r] + k] = pattern.column_number(r, k);
+              same[r] =
+                have_rows &&
+                positions_row_start[r + 1] - positions_row_start[r] == length &&
+                std::equal(columns.begin() + row_start[r],
+                           columns.begin() + row_start[r + 1],
+                           positions_columns.begin() + positions_row_start[r]);
+            }
+        },
+        512);
+      // a cell's rows that changed (all of them at the first call) find
+      // their offsets by one binary search per local entry, and their
+      // node-wise ones; the others keep theirs (their node-wise ones are
+      // found too if there were none). The cells in parallel, each writing
+      // only its own
+      const bool had_node_wise = have_rows && !node_positions.empty();
+      positions.resize(std::size_t(n_cells) * n_local * n_local);
+      node_positions.resize(std::size_t(n_cells) * n_local * per_row);
+      std::atomic<bool> all_found{true}, node_wise{true};
       parallel::apply_to_subranges(
         0u,
         static_cast<unsigned int>(deformable_cells.size()),
         [&](const unsigned int begin, const unsigned int end) {
+          // flags decided locally: a shared one written per entry cost more
+          // than the whole rest (its cache line passed between threads)
+          bool found = true, ok = true;
           for (unsigned int k = begin; k < end; ++k)
             {
               const unsigned int             c    = deformable_cells[k];
               const types::global_dof_index *dofs = &cell_dofs[c * n_local];
               unsigned int *at = &positions[std::size_t(c) * n_local * n_local];
-              for (unsigned int i = 0; i < n_local; ++i)
-                if (same[dofs[i]])
-                  for (unsigned int j = 0; j < n_local; ++j)
-                    at[i * n_local + j] = at[i * n_local + j] -
-                                          positions_row_start[dofs[i]] +
-                                          row_start[dofs[i]];
-                else
-                  for (unsigned int j = 0; j < n_local; ++j)
-                    {
-                      // compared before narrowing to the stored 32 bits,
-                      // where invalid_entry would no longer read as itself
-                      const std::size_t p = pattern(dofs[i], dofs[j]);
-                      if (p == SparsityPattern::invalid_entry)
-                        all_found = false;
-                      at[i * n_local + j] = p;
-                    }
-            }
-        },
-        256);
-      AssertThrow(all_found, ExcInternalError());
-
-      // the node-wise positions, if every cell's rows allow them
-      const unsigned int per_row = n_nodes + 1;
-      node_positions.resize(std::size_t(n_cells) * n_local * per_row);
-      std::atomic<bool> node_wise{true};
-      parallel::apply_to_subranges(
-        0u,
-        static_cast<unsigned int>(deformable_cells.size()),
-        [&](const unsigned int begin, const unsigned int end) {
-          // decided in a local flag: the shared one written per entry cost
-          // more than the whole rest (its cache line passed between threads)
-          bool ok = node_wise;
-          for (unsigned int k = begin; k < end && ok; ++k)
-            {
-              const unsigned int  c = deformable_cells[k];
-              const unsigned int *at =
-                &positions[std::size_t(c) * n_local * n_local];
-              const types::global_dof_index *dofs = &cell_dofs[c * n_local];
-              unsigned int                  *np =
+              unsigned int *np =
                 &node_positions[std::size_t(c) * n_local * per_row];
-              for (unsigned int b = 0; b < n_nodes; ++b)
-                if (dofs[3 * b + 1] != dofs[3 * b] + 1 ||
-                    dofs[3 * b + 2] != dofs[3 * b] + 2)
-                  ok = false;
+              bool checked = false;
               for (unsigned int r = 0; r < n_local; ++r)
                 {
-                  const unsigned int  a = r / 3, i = r % 3;
-                  const unsigned int *row = at + r * n_local;
+                  const bool changed = !have_rows || same[dofs[r]] == 0;
+                  if (!changed && had_node_wise)
+                    continue;
+                  unsigned int *row = at + r * n_local;
+                  if (changed)
+                    for (unsigned int j = 0; j < n_local; ++j)
+                      {
+                        // compared before narrowing to the stored 32 bits,
+                        // where invalid_entry would no longer read as
+                        // itself
+                        const std::size_t p = pattern(dofs[r], dofs[j]);
+                        if (p == SparsityPattern::invalid_entry)
+                          found = false;
+                        else
+                          row[j] = p - row_start[dofs[r]];
+                      }
+                  // per node: each node's three DoFs consecutive, and so
+                  // its three columns in the row (the diagonal left out)
+                  if (!checked)
+                    for (unsigned int b = 0; b < n_nodes; ++b)
+                      if (dofs[3 * b + 1] != dofs[3 * b] + 1 ||
+                          dofs[3 * b + 2] != dofs[3 * b] + 2)
+                        ok = false;
+                  checked              = true;
+                  const unsigned int a = r / 3, i = r % 3;
                   for (unsigned int b = 0; b < n_nodes; ++b)
                     {
-                      // the node's columns in order, the diagonal left out
                       unsigned int       offset = 0;
                       const unsigned int base =
                         row[3 * b + (b == a && i == 0 ? 1 : 0)];
@@ -1005,10 +1011,13 @@ namespace TissueContact
                   np[r * per_row + n_nodes] = row[r];
                 }
             }
+          if (!found)
+            all_found = false;
           if (!ok)
             node_wise = false;
         },
         256);
+      AssertThrow(all_found, ExcInternalError());
       if (!node_wise)
         node_positions.clear();
       positions_pattern = &pattern;

@@ -135,10 +135,10 @@ namespace TissueContact
        * couplings made that search most of the elastic assembly. Call again
        * whenever @p pattern changes; a matrix on another pattern, or on
        * this one after its number of entries changed, is assembled by
-       * searching as before. A row with the same columns as in the pattern
-       * of the last call keeps its entries' offsets within the row (only
-       * the row's start moves): only the rows contact couplings changed are
-       * searched again.
+       * searching as before. The offsets are stored within each row: a
+       * row with the columns it had in the pattern of the last call keeps
+       * them in every cell, and only the rows the contact couplings changed
+       * are searched again.
        */
       void
       use_matrix_pattern(const SparsityPattern &pattern);
@@ -241,8 +241,9 @@ namespace TissueContact
                               const Vector<double> &u,
                               Point<3>             *x) const;
 
-      // positions of cell c's entry (i, j) in the values of a matrix on
-      // positions_pattern: [c][i * n_local + j] (use_matrix_pattern())
+      // offsets of cell c's entry (i, j) in the values of row dofs[i] of a
+      // matrix on positions_pattern, from the row's first value:
+      // [c][i * n_local + j] (use_matrix_pattern())
       std::vector<unsigned int> positions;
       const SparsityPattern    *positions_pattern = nullptr;
       std::size_t               positions_entries = 0;
@@ -252,9 +253,9 @@ namespace TissueContact
       std::vector<types::global_dof_index> positions_columns;
       // the same per row and node, where each node's three DoFs are
       // consecutive and so are its columns in every row (empty otherwise):
-      // [c][i * (n_nodes + 1) + b] the position of column 3 b (of the first
+      // [c][i * (n_nodes + 1) + b] the offset of column 3 b (of the first
       // column after the diagonal for row i's own node), [.. + n_nodes] the
-      // diagonal's; a third of the positions to read per cell
+      // diagonal's; a third of the offsets to read per cell
       std::vector<unsigned int> node_positions;
 
       // per cell its lowest and highest unknown
