@@ -129,18 +129,20 @@ namespace TissueContact
         amg_aggregation,
         "For Type = GMRES+AMG: smoothed (the aggregates' tentative "
         "prolongators smoothed by damped Jacobi, ML's default smoothed "
-        "aggregation) or plain (the tentative prolongators as they are: a "
+        "aggregation), plain (the tentative prolongators as they are: a "
         "hierarchy built 2.4 times as fast, sparser coarse levels, more "
-        "iterations). Measured with two threads (doc/theory/04-solver.md "
-        "sec. 4.5.2): plain took the full knee (prm/knee_flexion.prm, which "
-        "sets it) from 464 s to 404-413 s, its linear solve from 237 s to "
-        "173-175 s; on the knee-scale tube (prm/knee_tube.prm) plain was 7 % "
-        "slower (one thread, side by side), on the falling rods the same. "
-        "With plain, a kept hierarchy (Reuse preconditioner) is refreshed "
-        "for each matrix: its aggregates and transfers kept, its operators "
-        "the Galerkin products of the new matrix (doc/theory/04-solver.md "
-        "sec. 4.5.1).",
-        Patterns::Selection("plain|smoothed"));
+        "iterations) or automatic: plain where the hierarchy is kept "
+        "(Reuse preconditioner, as Type = automatic sets it), smoothed "
+        "where each solve builds its own. With plain, a kept hierarchy is "
+        "refreshed for each matrix: its aggregates and transfers kept, its "
+        "operators the Galerkin products of the new matrix "
+        "(doc/theory/04-solver.md sec. 4.5.1). Measured with the hierarchy "
+        "kept, two threads, plain against smoothed (sec. 4.5.2, "
+        "2026-12-08): the apple snake 11.9-14.1 s against 14.7-15.0 s, the "
+        "knee-scale tube 16.6-17.9 s against 17.8-17.9 s, the falling rods "
+        "to t = 0.3 12.4-13.0 s against 12.6-13.0 s, the full knee's first "
+        "8 increments 14.8-15.8 s against 27.9-29.5 s.",
+        Patterns::Selection("plain|smoothed|automatic"));
       prm.add_parameter(
         "Forcing term",
         forcing_term,
@@ -274,7 +276,7 @@ namespace TissueContact
       // (doc/theory/04-solver.md sec. 4.5.1); not with smoothed
       // aggregation, whose prolongators hold a row's whole neighbourhood:
       // there the Galerkin products cost more than the iterations they save
-      const bool smoothed  = parameters.amg_aggregation == "smoothed";
+      const bool smoothed  = parameters.aggregation() == "smoothed";
       bool       refreshed = false;
       if (!amg)
         {

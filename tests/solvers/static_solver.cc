@@ -691,8 +691,10 @@ namespace
     Vector<double>             b(n), x(n), r(n);
     b = 1.;
     Solvers::LinearSolver::Parameters p;
-    p.type                          = "GMRES+AMG";
-    p.reuse_preconditioner          = true;
+    p.type                 = "GMRES+AMG";
+    p.reuse_preconditioner = true;
+    // a kept hierarchy that is not refreshed (plain aggregation's is)
+    p.amg_aggregation               = "smoothed";
     const double                tol = 1e-6;
     const Solvers::LinearSolver kept(p), fresh(p);
     const unsigned int          n1     = kept.solve(A1, x, b, tol);

@@ -65,12 +65,26 @@ namespace TissueContact
                                        50;
         }
         bool amg_rotations = false;
-        /** "plain" or "smoothed" aggregation (AMGPreconditioner). */
-        std::string amg_aggregation = "smoothed";
+        /** "plain", "smoothed" or "automatic" aggregation
+         * (AMGPreconditioner; aggregation()). */
+        std::string amg_aggregation = "automatic";
         /** "fixed" (relative_tolerance) or "Eisenstat-Walker". */
         std::string forcing_term = "fixed";
         /** Keep the AMG hierarchy from one solve to the next. */
         bool reuse_preconditioner = false;
+
+        /** The aggregation AMG uses: amg_aggregation, or for "automatic"
+         * plain where the hierarchy is kept (reuse_preconditioner, as
+         * Type = automatic sets it), whose operators are then refreshed
+         * for each matrix, and smoothed where each solve builds its own:
+         * measured in doc/theory/04-solver.md sec. 4.5.2. */
+        std::string
+        aggregation() const
+        {
+          return amg_aggregation != "automatic" ? amg_aggregation :
+                 reuse_preconditioner           ? "plain" :
+                                                  "smoothed";
+        }
 
         /** With Type = GMRES+AMG (chosen or automatic): the Newton steps of
          * the energy line search by conjugate gradients with AMG, which
